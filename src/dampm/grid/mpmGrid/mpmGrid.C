@@ -1,0 +1,305 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpmGrid.H"
+#include "emptyPolyPatch.H"
+#include "boundBox.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(mpmGrid, 0);
+
+    //- Relative tolerance (of the cell size) for lattice checks
+    static const scalar latticeTol = 1e-6;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::mpmGrid::notStructured(const string& why) const
+{
+    FatalErrorInFunction
+        << "The mesh " << mesh_.time().path()/mesh_.dbDir()
+        << " is not a uniform, axis-aligned structured block: " << why
+        << nl << "    dampm needs one blockMesh block of hexahedra with"
+        << " axis-aligned edges and simpleGrading (1 1 1)"
+        << " (see system/blockMeshDict)." << exit(FatalError);
+    ::abort();
+}
+
+
+bool Foam::mpmGrid::detect2D(const label nz) const
+{
+    bool emptyZ = false;
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(pp) || pp.empty())
+        {
+            continue;
+        }
+        const vector n = pp.faceAreas()[0]/mag(pp.faceAreas()[0]);
+        if (mag(n.z()) < 1 - latticeTol)
+        {
+            notStructured
+            (
+                "empty patch " + pp.name() + " is not normal to z;"
+                " a 2D grid has its bed in the x-y plane"
+            );
+        }
+        emptyZ = true;
+    }
+    if (emptyZ && nz != 1)
+    {
+        notStructured("a 2D mesh (empty patches) must be one cell thick in z");
+    }
+    return emptyZ;
+}
+
+
+void Foam::mpmGrid::setGeometry()
+{
+    const pointField& pts = mesh_.points();
+    if (mesh_.nCells() == 0)
+    {
+        notStructured("it has no cells");
+    }
+    const boundBox bb(pts, false);
+
+    // The spacing from the first cell's bounding box; the lattice checks
+    // below catch any other cell size
+    const boundBox cellBb(pts, mesh_.cellPoints()[0], false);
+
+    label n[3];
+    for (direction d = 0; d < 3; ++d)
+    {
+        geom_.origin[d] = bb.min()[d];
+        geom_.dx[d] = cellBb.span()[d];
+        if (!(geom_.dx[d] > 0))
+        {
+            notStructured("cell 0 has zero extent along axis " + Foam::name(d));
+        }
+        const scalar ratio = bb.span()[d]/geom_.dx[d];
+        n[d] = label(std::round(ratio));
+        if (mag(ratio - n[d]) > 1e3*latticeTol*ratio)
+        {
+            notStructured
+            (
+                "the domain length along axis " + Foam::name(d) + " ("
+              + Foam::name(bb.span()[d]) + ") is not a whole number of cell"
+                " sizes (" + Foam::name(geom_.dx[d]) + "): graded cells?"
+            );
+        }
+        // Spacing from the whole span: less round-off than one cell
+        geom_.dx[d] = bb.span()[d]/n[d];
+        geom_.nCells[d] = n[d];
+    }
+
+    if (label(n[0])*n[1]*n[2] != mesh_.nCells())
+    {
+        notStructured
+        (
+            "it has " + Foam::name(mesh_.nCells()) + " cells, but its bounding"
+            " box and first cell give " + Foam::name(n[0]) + " x "
+          + Foam::name(n[1]) + " x " + Foam::name(n[2])
+          + ": graded, skewed or not a single box"
+        );
+    }
+
+    geom_.dim = detect2D(n[2]) ? 2 : 3;
+    geom_.finalise();
+}
+
+
+void Foam::mpmGrid::mapPoints()
+{
+    const pointField& pts = mesh_.points();
+    const label nLattice =
+        (geom_.nCells[0] + 1)*(geom_.nCells[1] + 1)
+       *(is2D() ? 2 : geom_.nCells[2] + 1);
+    if (pts.size() != nLattice)
+    {
+        notStructured
+        (
+            "it has " + Foam::name(pts.size()) + " points instead of "
+          + Foam::name(nLattice)
+        );
+    }
+
+    pointNode_.setSize(pts.size());
+    forAll(pts, pointi)
+    {
+        label ijk[3];
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalar xi = (pts[pointi][d] - geom_.origin[d])/geom_.dx[d];
+            ijk[d] = label(std::round(xi));
+            if (mag(xi - ijk[d]) > latticeTol*max(scalar(1), mag(xi)))
+            {
+                notStructured
+                (
+                    "point " + Foam::name(pointi) + " at "
+                  + Foam::name(pts[pointi]) + " is off the uniform lattice"
+                    " (graded or skewed cells)"
+                );
+            }
+        }
+        pointNode_[pointi] = geom_.nodeIndex(ijk[0], ijk[1], ijk[2]);
+    }
+}
+
+
+void Foam::mpmGrid::mapCells()
+{
+    const vectorField& C = mesh_.cellCentres();
+    const scalarField& V = mesh_.cellVolumes();
+    const scalar cellVol = geom_.dx[0]*geom_.dx[1]*geom_.dx[2];
+
+    meshCell_.setSize(nCells(), -1);
+    structuredCell_.setSize(mesh_.nCells());
+
+    forAll(C, celli)
+    {
+        label ijk[3];
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalar xi = (C[celli][d] - geom_.origin[d])/geom_.dx[d] - 0.5;
+            ijk[d] = label(std::round(xi));
+            if (mag(xi - ijk[d]) > 1e2*latticeTol*max(scalar(1), mag(xi)))
+            {
+                notStructured
+                (
+                    "the centre " + Foam::name(C[celli]) + " of cell "
+                  + Foam::name(celli) + " is not a structured cell centre"
+                    " (graded or skewed cells)"
+                );
+            }
+        }
+        if (mag(V[celli] - cellVol) > 1e2*latticeTol*cellVol)
+        {
+            notStructured
+            (
+                "cell " + Foam::name(celli) + " has volume "
+              + Foam::name(V[celli]) + " instead of " + Foam::name(cellVol)
+            );
+        }
+        const label sc = geom_.cellIndex(ijk[0], ijk[1], is2D() ? 0 : ijk[2]);
+        if (meshCell_[sc] != -1)
+        {
+            notStructured
+            (
+                "cells " + Foam::name(meshCell_[sc]) + " and "
+              + Foam::name(celli) + " have the same centre"
+            );
+        }
+        meshCell_[sc] = celli;
+        structuredCell_[celli] = sc;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
+:
+    mesh_(mesh)
+{
+    setGeometry();
+    mapPoints();
+    mapCells();
+
+    Info<< "mpmGrid: " << (is2D() ? "2D " : "3D ")
+        << geom_.nCells[0] << " x " << geom_.nCells[1];
+    if (!is2D())
+    {
+        Info<< " x " << geom_.nCells[2];
+    }
+    Info<< " cells, spacing (" << geom_.dx[0] << ' ' << geom_.dx[1];
+    if (!is2D())
+    {
+        Info<< ' ' << geom_.dx[2];
+    }
+    Info<< ") m, origin (" << geom_.origin[0] << ' ' << geom_.origin[1] << ' '
+        << geom_.origin[2] << "), " << nNodes() << " nodes with ghosts"
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::mpmGrid::findCell(const point& p) const
+{
+    if (!geom_.inside(p.x(), p.y(), p.z()))
+    {
+        return -1;
+    }
+    if
+    (
+        is2D()
+     && (p.z() < geom_.origin[2] || p.z() > geom_.origin[2] + geom_.dx[2])
+    )
+    {
+        return -1;
+    }
+    return meshCell_[geom_.cellOf(p.x(), p.y(), p.z())];
+}
+
+
+Foam::point Foam::mpmGrid::nodePosition(const label nodei) const
+{
+    gridGeometry::index ijk[3];
+    geom_.nodeIJK(nodei, ijk);
+    return point
+    (
+        geom_.nodeCoord(0, ijk[0]),
+        geom_.nodeCoord(1, ijk[1]),
+        is2D() ? 0 : geom_.nodeCoord(2, ijk[2])
+    );
+}
+
+
+void Foam::mpmGrid::nodeToPoint
+(
+    const double* nodeValues,
+    scalarField& pf
+) const
+{
+    pf.setSize(pointNode_.size());
+    forAll(pointNode_, pointi)
+    {
+        pf[pointi] = nodeValues[pointNode_[pointi]];
+    }
+}
+
+
+void Foam::mpmGrid::nodeToPoint
+(
+    const double* nodeX,
+    const double* nodeY,
+    const double* nodeZ,
+    vectorField& pf
+) const
+{
+    pf.setSize(pointNode_.size());
+    forAll(pointNode_, pointi)
+    {
+        const label nodei = pointNode_[pointi];
+        pf[pointi] = vector
+        (
+            nodeX ? nodeX[nodei] : 0,
+            nodeY ? nodeY[nodei] : 0,
+            nodeZ ? nodeZ[nodei] : 0
+        );
+    }
+}
+
+
+// ************************************************************************* //

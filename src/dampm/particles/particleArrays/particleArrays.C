@@ -1,0 +1,253 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "particleArrays.H"
+#include "error.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleArrays::particleArrays()
+:
+    size_(0)
+{
+    addField("positions", fieldKind::vector);
+    addField("U", fieldKind::vector);
+    addField("m", fieldKind::scalar);
+    addField("V", fieldKind::scalar);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::particleArrays::nComponents(const fieldKind kind)
+{
+    switch (kind)
+    {
+        case fieldKind::scalar: return 1;
+        case fieldKind::vector: return 3;
+        case fieldKind::symmTensor: return 6;
+        case fieldKind::tensor: return 9;
+        default: return 0;
+    }
+}
+
+
+Foam::label Foam::particleArrays::addField
+(
+    const word& name,
+    const fieldKind kind,
+    const double initialValue,
+    const label nInternalComponents
+)
+{
+    if (found(name))
+    {
+        FatalErrorInFunction
+            << "particle field " << name << " exists already"
+            << abort(FatalError);
+    }
+
+    const label nComp =
+        kind == fieldKind::internal ? nInternalComponents : nComponents(kind);
+    const label first = nColumns();
+
+    fields_.push_back(fieldInfo{name, kind, nComp, first, initialValue});
+    for (label c = 0; c < nComp; ++c)
+    {
+        columns_.emplace_back(size_, initialValue);
+        columns_.back().reserve(cell_.capacity());
+    }
+    return first;
+}
+
+
+bool Foam::particleArrays::found(const word& name) const
+{
+    for (const fieldInfo& f : fields_)
+    {
+        if (f.name == name)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+const Foam::particleArrays::fieldInfo&
+Foam::particleArrays::field(const word& name) const
+{
+    for (const fieldInfo& f : fields_)
+    {
+        if (f.name == name)
+        {
+            return f;
+        }
+    }
+    FatalErrorInFunction
+        << "no particle field " << name << abort(FatalError);
+    return fields_.front();
+}
+
+
+void Foam::particleArrays::reserve(const label n)
+{
+    for (std::vector<double>& c : columns_)
+    {
+        c.reserve(n);
+    }
+    cell_.reserve(n);
+    order_.reserve(n);
+    scratch_.reserve(n);
+}
+
+
+Foam::label Foam::particleArrays::append(const label n)
+{
+    const label first = size_;
+    size_ += n;
+    for (const fieldInfo& f : fields_)
+    {
+        for (label c = f.first; c < f.first + f.nComponents; ++c)
+        {
+            columns_[c].resize(size_, f.initialValue);
+        }
+    }
+    cell_.resize(size_, 0);
+    return first;
+}
+
+
+Foam::label Foam::particleArrays::removeFlagged
+(
+    const std::vector<char>& flagged
+)
+{
+    label n = 0;
+    order_.resize(size_);
+    for (label i = 0; i < size_; ++i)
+    {
+        if (!flagged[i])
+        {
+            order_[n++] = i;
+        }
+    }
+    const label nRemoved = size_ - n;
+    if (nRemoved)
+    {
+        // Stable compaction: order_[k] >= k, so copying forwards is safe
+        #pragma omp parallel for schedule(static)
+        for (label c = 0; c < nColumns(); ++c)
+        {
+            double* col = columns_[c].data();
+            for (label k = 0; k < n; ++k)
+            {
+                col[k] = col[order_[k]];
+            }
+            columns_[c].resize(n);
+        }
+        for (label k = 0; k < n; ++k)
+        {
+            cell_[k] = cell_[order_[k]];
+        }
+        cell_.resize(n);
+        size_ = n;
+    }
+    return nRemoved;
+}
+
+
+void Foam::particleArrays::clear()
+{
+    for (std::vector<double>& c : columns_)
+    {
+        c.clear();
+    }
+    cell_.clear();
+    size_ = 0;
+}
+
+
+void Foam::particleArrays::permute()
+{
+    scratch_.resize(size_);
+    for (std::vector<double>& col : columns_)
+    {
+        double* s = scratch_.data();
+        const double* src = col.data();
+        const label* ord = order_.data();
+
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < size_; ++k)
+        {
+            s[k] = src[ord[k]];
+        }
+        col.swap(scratch_);
+    }
+}
+
+
+void Foam::particleArrays::sortByCell(const gridGeometry& g)
+{
+    const label nCells = g.nCellsTotal();
+    const double* x = column(X);
+    const double* y = column(Y);
+    const double* z = column(Z);
+
+    cell_.resize(size_);
+    label* cellp = cell_.data();
+    bool sorted = true;
+
+    #pragma omp parallel for schedule(static) reduction(&&:sorted)
+    for (label i = 0; i < size_; ++i)
+    {
+        cellp[i] = g.cellOf(x[i], y[i], z[i]);
+        sorted = sorted && (i == 0 || g.cellOf(x[i-1], y[i-1], z[i-1]) <= cellp[i]);
+    }
+
+    // Counting sort: cellStart is the exclusive prefix sum of the counts
+    cellStart_.assign(nCells + 1, 0);
+    for (label i = 0; i < size_; ++i)
+    {
+        ++cellStart_[cellp[i] + 1];
+    }
+    for (label c = 0; c < nCells; ++c)
+    {
+        cellStart_[c + 1] += cellStart_[c];
+    }
+
+    if (sorted)
+    {
+        return;
+    }
+
+    count_.assign(cellStart_.begin(), cellStart_.end() - 1);
+    order_.resize(size_);
+    for (label i = 0; i < size_; ++i)
+    {
+        order_[count_[cellp[i]]++] = i;
+    }
+    permute();
+
+    // The columns now live in other buffers: refresh the cells from them
+    const double* xs = column(X);
+    const double* ys = column(Y);
+    const double* zs = column(Z);
+
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < size_; ++k)
+    {
+        cellp[k] = g.cellOf(xs[k], ys[k], zs[k]);
+    }
+}
+
+
+// ************************************************************************* //

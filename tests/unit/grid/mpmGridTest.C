@@ -1,0 +1,156 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    mpmGrid from blockMesh meshes: 2D/3D detection, spacing and origin, the
+    node <-> mesh point map, index-arithmetic cell lookup against OpenFOAM's
+    own cell search, and refusal of graded and skewed meshes.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpmGrid.H"
+#include "testCase.H"
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace Foam;
+
+namespace
+{
+
+constexpr double geomTol = 1e-12;  // coordinates of order 10 m
+
+void checkFindCellAgainstMesh(const mpmGrid& grid, const int nPoints)
+{
+    const fvMesh& mesh = grid.mesh();
+    const boundBox bb(mesh.points(), false);
+    std::mt19937 gen(2026);
+    std::uniform_real_distribution<double> u(-0.05, 1.05);
+    int nInside = 0;
+    for (int i = 0; i < nPoints; ++i)
+    {
+        const point p
+        (
+            bb.min().x() + u(gen)*bb.span().x(),
+            bb.min().y() + u(gen)*bb.span().y(),
+            bb.min().z() + u(gen)*bb.span().z()
+        );
+        const label expected = mesh.findCell(p);
+        EXPECT_EQ(grid.findCell(p), expected)
+            << "point " << p.x() << ' ' << p.y() << ' ' << p.z();
+        nInside += (expected >= 0);
+    }
+    // The sample must exercise both inside and outside points
+    EXPECT_GT(nInside, nPoints/2);
+    EXPECT_LT(nInside, nPoints);
+}
+
+void checkNodesAtMeshPoints(const mpmGrid& grid)
+{
+    const pointField& pts = grid.mesh().points();
+    forAll(pts, pointi)
+    {
+        const point np = grid.nodePosition(grid.pointNode()[pointi]);
+        EXPECT_NEAR(np.x(), pts[pointi].x(), geomTol);
+        EXPECT_NEAR(np.y(), pts[pointi].y(), geomTol);
+        if (!grid.is2D())
+        {
+            EXPECT_NEAR(np.z(), pts[pointi].z(), geomTol);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+TEST(mpmGrid, TwoDimensionalBlockGivesBedPlaneGrid)
+{
+    testCase tc(testCase::meshDir("box2D"));
+    const mpmGrid grid(tc.mesh());
+    const gridGeometry& g = grid.geometry();
+    EXPECT_TRUE(grid.is2D());
+    EXPECT_EQ(g.nCells[0], 20);
+    EXPECT_EQ(g.nCells[1], 10);
+    EXPECT_EQ(g.nCells[2], 1);
+    EXPECT_NEAR(g.dx[0], 0.5, geomTol);
+    EXPECT_NEAR(g.dx[1], 0.5, geomTol);
+    EXPECT_EQ(grid.nNodes(), (21 + 2)*(11 + 2));
+    checkNodesAtMeshPoints(grid);
+}
+
+
+TEST(mpmGrid, ThreeDimensionalBlockKeepsOriginAndSpacing)
+{
+    testCase tc(testCase::meshDir("box3D"));
+    const mpmGrid grid(tc.mesh());
+    const gridGeometry& g = grid.geometry();
+    EXPECT_FALSE(grid.is2D());
+    EXPECT_EQ(g.nCellsTotal(), 8*6*5);
+    EXPECT_NEAR(g.origin[0], 1.0, geomTol);
+    EXPECT_NEAR(g.origin[1], -2.0, geomTol);
+    EXPECT_NEAR(g.origin[2], 0.5, geomTol);
+    for (int d = 0; d < 3; ++d)
+    {
+        EXPECT_NEAR(g.dx[d], 0.5, geomTol);
+    }
+    EXPECT_EQ(grid.nNodes(), 11*9*8);
+    checkNodesAtMeshPoints(grid);
+}
+
+
+TEST(mpmGrid, StructuredLookupAgreesWithMeshSearch3D)
+{
+    testCase tc(testCase::meshDir("box3D"));
+    checkFindCellAgainstMesh(mpmGrid(tc.mesh()), 3000);
+}
+
+
+TEST(mpmGrid, StructuredLookupAgreesWithMeshSearch2D)
+{
+    testCase tc(testCase::meshDir("box2D"));
+    checkFindCellAgainstMesh(mpmGrid(tc.mesh()), 3000);
+}
+
+
+TEST(mpmGrid, StructuredCellsMapOneToOneOnMeshCells)
+{
+    testCase tc(testCase::meshDir("box3D"));
+    const mpmGrid grid(tc.mesh());
+    labelList hits(tc.mesh().nCells(), 0);
+    for (const label celli : grid.meshCell())
+    {
+        ASSERT_GE(celli, 0);
+        ++hits[celli];
+    }
+    for (const label h : hits)
+    {
+        EXPECT_EQ(h, 1);
+    }
+}
+
+
+TEST(mpmGrid, GradedMeshIsRefusedWithReason)
+{
+    testCase tc(testCase::meshDir("graded"));
+    const std::string msg = foamErrorMessage([&]{ mpmGrid grid(tc.mesh()); });
+    EXPECT_NE(msg.find("not a uniform, axis-aligned structured block"),
+        std::string::npos) << msg;
+    EXPECT_NE(msg.find("blockMeshDict"), std::string::npos) << msg;
+}
+
+
+TEST(mpmGrid, SkewedMeshIsRefusedWithReason)
+{
+    testCase tc(testCase::meshDir("skewed"));
+    const std::string msg = foamErrorMessage([&]{ mpmGrid grid(tc.mesh()); });
+    EXPECT_NE(msg.find("not a uniform, axis-aligned structured block"),
+        std::string::npos) << msg;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,153 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    particleArrays: fields, append, stable removal, and the counting sort by
+    cell that keeps every field of a particle together.
+
+\*---------------------------------------------------------------------------*/
+
+#include "particleArrays.H"
+#include "testCase.H"
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace Foam;
+
+namespace
+{
+
+gridGeometry grid2D()
+{
+    gridGeometry g;
+    g.dim = 2;
+    g.dx[0] = g.dx[1] = 0.5;
+    g.dx[2] = 1;
+    g.nCells[0] = 16;
+    g.nCells[1] = 9;
+    g.finalise();
+    return g;
+}
+
+// Particles with an id and a value that is a function of the id
+particleArrays randomParticles(const gridGeometry& g, const label n)
+{
+    particleArrays p;
+    const label id = p.addField("id", particleArrays::fieldKind::scalar);
+    const label tag = p.addField("tag", particleArrays::fieldKind::vector);
+    p.append(n);
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (label i = 0; i < n; ++i)
+    {
+        p.column(particleArrays::X)[i] = u(gen)*g.upper(0);
+        p.column(particleArrays::Y)[i] = u(gen)*g.upper(1);
+        p.column(particleArrays::M)[i] = 1 + i;
+        p.column(id)[i] = i;
+        p.column(tag + 2)[i] = 3.0*i;
+    }
+    return p;
+}
+
+} // End anonymous namespace
+
+
+TEST(particleArrays, HasStandardFieldsAndRefusesDuplicates)
+{
+    particleArrays p;
+    EXPECT_TRUE(p.found("positions"));
+    EXPECT_TRUE(p.found("U"));
+    EXPECT_EQ(p.field("m").first, particleArrays::M);
+    EXPECT_EQ(p.field("V").first, particleArrays::VOL);
+    const std::string msg = foamErrorMessage
+    (
+        [&]{ p.addField("U", particleArrays::fieldKind::vector); }
+    );
+    EXPECT_NE(msg.find("exists already"), std::string::npos) << msg;
+}
+
+
+TEST(particleArrays, AppendedParticlesTakeTheFieldsInitialValue)
+{
+    particleArrays p;
+    const label h = p.addField("h", particleArrays::fieldKind::scalar, 2.5);
+    p.append(3);
+    p.column(h)[0] = 7;
+    p.append(2);
+    EXPECT_EQ(p.size(), 5);
+    EXPECT_EQ(p.column(h)[0], 7);
+    EXPECT_EQ(p.column(h)[4], 2.5);
+    EXPECT_EQ(p.column(particleArrays::M)[4], 0);
+}
+
+
+TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
+{
+    const gridGeometry g = grid2D();
+    particleArrays p = randomParticles(g, 5000);
+    p.sortByCell(g);
+
+    const label id = p.field("id").first;
+    const label tag = p.field("tag").first;
+    const std::vector<label>& cellStart = p.cellStart();
+    ASSERT_EQ(label(cellStart.size()), g.nCellsTotal() + 1);
+    EXPECT_EQ(cellStart.back(), p.size());
+
+    std::vector<int> seen(p.size(), 0);
+    for (label c = 0; c < g.nCellsTotal(); ++c)
+    {
+        for (label i = cellStart[c]; i < cellStart[c + 1]; ++i)
+        {
+            const double* x = p.column(particleArrays::X);
+            const double* y = p.column(particleArrays::Y);
+            EXPECT_EQ(g.cellOf(x[i], y[i], 0), c);
+            EXPECT_EQ(p.cell()[i], c);
+            const label orig = label(p.column(id)[i]);
+            ++seen[orig];
+            EXPECT_EQ(p.column(particleArrays::M)[i], 1.0 + orig);
+            EXPECT_EQ(p.column(tag + 2)[i], 3.0*orig);
+            // Stable: within a cell the original order is kept
+            if (i > cellStart[c])
+            {
+                EXPECT_LT(p.column(id)[i - 1], p.column(id)[i]);
+            }
+        }
+    }
+    for (const int s : seen)
+    {
+        EXPECT_EQ(s, 1);
+    }
+}
+
+
+TEST(particleArrays, RemoveFlaggedKeepsOrderOfTheRest)
+{
+    const gridGeometry g = grid2D();
+    particleArrays p = randomParticles(g, 100);
+    std::vector<char> flagged(100, 0);
+    for (int i = 0; i < 100; i += 3)
+    {
+        flagged[i] = 1;
+    }
+    EXPECT_EQ(p.removeFlagged(flagged), 34);
+    ASSERT_EQ(p.size(), 66);
+    const label id = p.field("id").first;
+    label k = 0;
+    for (int i = 0; i < 100; ++i)
+    {
+        if (!flagged[i])
+        {
+            EXPECT_EQ(p.column(id)[k], i);
+            EXPECT_EQ(p.column(particleArrays::M)[k], 1.0 + i);
+            ++k;
+        }
+    }
+}
+
+
+// ************************************************************************* //
