@@ -35,6 +35,7 @@ Foam::label Foam::particleArrays::nComponents(const fieldKind kind)
         case fieldKind::vector: return 3;
         case fieldKind::symmTensor: return 6;
         case fieldKind::tensor: return 9;
+        case fieldKind::tensor2D: return 4;
         default: return 0;
     }
 }

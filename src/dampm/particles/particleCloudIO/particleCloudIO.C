@@ -16,12 +16,22 @@ License
 #include "IFstream.H"
 #include "symmTensor.H"
 #include "tensor.H"
+#include "tensor2D.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
 {
     defineTypeNameAndDebug(particleCloudIO, 0);
+
+    // OpenFOAM defines no IOField of tensor2D: name it as the other fields
+    typedef IOField<tensor2D> tensor2DIOField;
+    defineTemplateTypeNameAndDebugWithName
+    (
+        tensor2DIOField,
+        "tensor2DField",
+        0
+    );
 
     //- Fewest significant digits for particle data
     static const unsigned minParticlePrecision = 12;
@@ -136,6 +146,7 @@ void Foam::particleCloudIO::writeField
         case kind::vector: writeTypedField<vector>(f); break;
         case kind::symmTensor: writeTypedField<symmTensor>(f); break;
         case kind::tensor: writeTypedField<tensor>(f); break;
+        case kind::tensor2D: writeTypedField<tensor2D>(f); break;
         case kind::internal: break;
     }
 }
@@ -294,6 +305,8 @@ Foam::wordList Foam::particleCloudIO::read
             case kind::symmTensor:
                 readTypedField<symmTensor>(particles, io, f); break;
             case kind::tensor: readTypedField<tensor>(particles, io, f); break;
+            case kind::tensor2D:
+                readTypedField<tensor2D>(particles, io, f); break;
             case kind::internal: break;
         }
     }

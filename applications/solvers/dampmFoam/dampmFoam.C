@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Application
+    dampmFoam
+
+Group
+    grpMPMSolvers
+
+Description
+    Depth-averaged Material Point Method (DAMPM) solver for the run-out of
+    landslides, mudflows and debris flows over terrain: the shallow-flow
+    equations (1) of Fois, Katili et al. with Voellmy bed friction and
+    depth-integrated Bingham rheology, on the 2D blockMesh grid.
+    The method: doc/dampmFoam-discretisation.md.
+
+    Reads constant/dampmProperties, constant/g and system/controlDict
+    (adjustTimeStep, maxCo, maxDeltaT); writes the particle cloud dampmCloud,
+    the grid fields h, U, Z and the hazard maps at every write time, and
+    postProcessing/dampmFoam/<startTime>/summary.dat every step.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pointFields.H"
+#include "mpmGrid.H"
+#include "depthAveragedFlow.H"
+#include "particleCloudIO.H"
+#include "hazardMaps.H"
+#include "timeSeriesFile.H"
+#include "stepTimers.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Depth-averaged MPM solver for landslide and mudflow run-out"
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
+
+        #include "setMPMDeltaT.H"
+
+        ++runTime;
+
+        timers.run(stepTimers::P2G, [&]{ flow.computeForces(); });
+        timers.run(stepTimers::grid, [&]
+        {
+            flow.updateGrid(dt);
+            hazard.update(flow.nodes());
+        });
+        timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
+        timers.countStep(flow.particles().size());
+
+        timers.run(stepTimers::IO, [&]
+        {
+            #include "writeOutput.H"
+        });
+    }
+
+    timers.report(Info);
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

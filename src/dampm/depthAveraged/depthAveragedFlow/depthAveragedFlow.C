@@ -1,0 +1,727 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "depthAveragedFlow.H"
+#include "visitShape.H"
+#include "transfers.H"
+#include "particleCloudIO.H"
+#include "wallPolyPatch.H"
+#include "emptyPolyPatch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::depthAveragedFlow::pressureFormType>
+Foam::depthAveragedFlow::pressureFormNames
+({
+    { pressureFormType::gradient, "gradient" },
+    { pressureFormType::divergence, "divergence" },
+});
+
+const Foam::word Foam::depthAveragedFlow::cloudName("dampmCloud");
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::depthAveragedFlow::readPositive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar value = dict.get<scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " = " << value << " is invalid; allowed: " << key
+            << " > 0" << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+void Foam::depthAveragedFlow::readSides()
+{
+    const gridGeometry& g = grid_.geometry();
+    // Sides with faces of a wall patch (+1) or another patch (+2)
+    int kinds[2][2] = {{0, 0}, {0, 0}};
+    for (const polyPatch& pp : grid_.mesh().boundaryMesh())
+    {
+        if (isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        const int kind = isA<wallPolyPatch>(pp) ? 1 : 2;
+        for (const point& c : pp.faceCentres())
+        {
+            for (int d = 0; d < 2; ++d)
+            {
+                const scalar tol = 1e-6*g.dx[d];
+                if (mag(c[d] - g.origin[d]) < tol)
+                {
+                    kinds[d][0] |= kind;
+                }
+                if (mag(c[d] - g.upper(d)) < tol)
+                {
+                    kinds[d][1] |= kind;
+                }
+            }
+        }
+    }
+    const char* sideNames[2][2] = {{"x min", "x max"}, {"y min", "y max"}};
+    for (int d = 0; d < 2; ++d)
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            if (kinds[d][s] == 3)
+            {
+                FatalErrorInFunction
+                    << "the " << sideNames[d][s] << " side of the domain has"
+                    << " faces of wall and of open patches; allowed: one"
+                    << " type per side (see system/blockMeshDict)"
+                    << exit(FatalError);
+            }
+            sides_.wall[d][s] = (kinds[d][s] == 1);
+        }
+    }
+}
+
+
+Foam::shallowColumns Foam::depthAveragedFlow::columns()
+{
+    particleArrays& p = particles_;
+    shallowColumns c;
+    c.n = p.size();
+    c.x = p.column(particleArrays::X);
+    c.y = p.column(particleArrays::Y);
+    c.m = p.column(particleArrays::M);
+    c.V = p.column(particleArrays::VOL);
+    for (int k = 0; k < 4; ++k)
+    {
+        c.C[k] = p.column(gradU_ + k);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+        c.sigma[k] = p.column(sigma_ + k);
+    }
+    c.h = p.column(h_);
+    c.a = p.column(A_);
+    c.kappa = p.column(kappa_);
+    c.Zb = p.column(Zb_);
+    c.gradZetaX = p.column(gradZeta_);
+    c.gradZetaY = p.column(gradZeta_ + 1);
+    c.gradZx = p.column(gradZ_);
+    c.gradZy = p.column(gradZ_ + 1);
+    c.s = p.column(basal_);
+    c.k1 = p.column(basal_ + 1);
+    c.k2 = p.column(basal_ + 2);
+    return c;
+}
+
+
+Foam::shallowParticles Foam::depthAveragedFlow::modelView()
+{
+    particleArrays& p = particles_;
+    shallowParticles v;
+    v.n = p.size();
+    v.m = p.column(particleArrays::M);
+    v.h = p.column(h_);
+    v.a = p.column(A_);
+    v.kappa = p.column(kappa_);
+    for (int k = 0; k < 4; ++k)
+    {
+        v.C[k] = p.column(gradU_ + k);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+        v.sigma[k] = p.column(sigma_ + k);
+    }
+    v.s = p.column(basal_);
+    v.k1 = p.column(basal_ + 1);
+    v.k2 = p.column(basal_ + 2);
+    v.rho = rho_;
+    v.g = g_;
+    v.hMin = hMin_;
+    return v;
+}
+
+
+bool Foam::depthAveragedFlow::basalActive() const
+{
+    return friction_->active() || rheology_->basalShear();
+}
+
+
+void Foam::depthAveragedFlow::seed(const releaseModel& release)
+{
+    const gridGeometry& g = grid_.geometry();
+    const label n = nPerCell_;
+    const scalar cellArea = g.dx[0]*g.dx[1]/(n*n);
+
+    std::vector<double> x, y, h;
+    for (label j = 0; j < g.nCells[1]*n; ++j)
+    {
+        const scalar yp = g.origin[1] + (j + 0.5)*g.dx[1]/n;
+        for (label i = 0; i < g.nCells[0]*n; ++i)
+        {
+            const scalar xp = g.origin[0] + (i + 0.5)*g.dx[0]/n;
+            const scalar hp = release.height(xp, yp);
+            if (!std::isfinite(hp))
+            {
+                FatalErrorInFunction
+                    << "release thickness at (" << xp << ' ' << yp << ") is "
+                    << hp << "; allowed: finite >= 0" << exit(FatalError);
+            }
+            if (hp > 0)
+            {
+                x.push_back(xp);
+                y.push_back(yp);
+                h.push_back(hp);
+            }
+        }
+    }
+    if (x.empty())
+    {
+        FatalErrorInFunction
+            << "the release puts no mass inside the domain" << exit(FatalError);
+    }
+
+    const label first = particles_.append(label(x.size()));
+    for (size_t k = 0; k < x.size(); ++k)
+    {
+        const label i = first + label(k);
+        particles_.column(particleArrays::X)[i] = x[k];
+        particles_.column(particleArrays::Y)[i] = y[k];
+        particles_.column(particleArrays::UX)[i] = release.U().x();
+        particles_.column(particleArrays::UY)[i] = release.U().y();
+        particles_.column(particleArrays::VOL)[i] = h[k]*cellArea;
+        particles_.column(particleArrays::M)[i] = rho_*h[k]*cellArea;
+        particles_.column(h_)[i] = h[k];
+        particles_.column(A_)[i] = cellArea;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::depthAveragedFlow::depthAveragedFlow
+(
+    const mpmGrid& grid,
+    const dictionary& dict,
+    const scalar g
+)
+:
+    grid_(grid),
+    rho_(readPositive(dict, "rho")),
+    g_(g),
+    nPerCell_(dict.getOrDefault<label>("particlesPerCell", 2)),
+    hMin_(dict.getOrDefault<scalar>("hMin", 1e-4)),
+    slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
+    pressureForm_
+    (
+        pressureFormNames.getOrDefault
+        (
+            "pressureForm",
+            dict,
+            pressureFormType::gradient
+        )
+    ),
+    schedule_(grid.geometry()),
+    massTol_(0),
+    outflowMass_(0),
+    prepared_(false)
+{
+    if (!grid.is2D())
+    {
+        FatalErrorInFunction
+            << "dampmFoam needs a 2D mesh (one cell thick in z, empty front"
+            << " and back: the bed plane x-y); see system/blockMeshDict"
+            << exit(FatalError);
+    }
+    if (nPerCell_ < 1 || nPerCell_ > 8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "particlesPerCell = " << nPerCell_ << " is invalid; allowed:"
+            << " 1 to 8 (per cell and axis)" << exit(FatalIOError);
+    }
+    if (!(hMin_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "hMin = " << hMin_ << " is invalid; allowed: hMin >= 0 [m]"
+            << exit(FatalIOError);
+    }
+
+    dictionary shapeDict(dict);
+    if (!shapeDict.found("shapeFunction"))
+    {
+        shapeDict.add("shapeFunction", word("quadraticBSpline"));
+    }
+    shape_ = shapeFunction::New(shapeDict, 0.5/nPerCell_);
+
+    const fileName caseDir = grid.mesh().time().path();
+    dictionary withDefaults(dict);
+    withDefaults.add("topography", word("flat"), false);
+    withDefaults.add("bedFriction", word("none"), false);
+    withDefaults.add("rheology", word("inviscid"), false);
+    topography_ = topographyModel::New(withDefaults, caseDir);
+    friction_ = bedFrictionModel::New(withDefaults);
+    rheology_ = rheologyModel::New(withDefaults);
+
+    readSides();
+
+    // Solver fields of the columns
+    typedef particleArrays::fieldKind kind;
+    h_ = particles_.addField("h", kind::scalar);
+    A_ = particles_.addField("A", kind::scalar);
+    gradU_ = particles_.addField("gradU", kind::tensor2D);
+    sigma_ = particles_.addField("sigma", kind::internal, 0, 3);
+    gradZeta_ = particles_.addField("gradZeta", kind::internal, 0, 2);
+    gradZ_ = particles_.addField("gradZ", kind::internal, 0, 2);
+    kappa_ = particles_.addField("kappa", kind::internal, 1, 1);
+    Zb_ = particles_.addField("Zb", kind::scalar);
+    basal_ = particles_.addField("basal", kind::internal, 0, 3);
+
+    // Node arrays, terrain and nodal areas
+    const gridGeometry& geom = grid.geometry();
+    nodes_.resize(geom.nNodes());
+    topography_->sampleNodes(geom, nodes_.Z.data());
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            nodalAreas(geom, kernel, nPerCell_, nodes_.area.data());
+        }
+    );
+    kappaNode_.assign(geom.nNodes(), 1.0);
+    if (slopeCorrection_ && !topography_->isFlat())
+    {
+        // Central differences of the sampled terrain (one-sided at the
+        // outer ghost layer)
+        const label sx = geom.nodeStride[1];
+        for (label j = 0; j < geom.nNodesDir[1]; ++j)
+        {
+            for (label i = 0; i < geom.nNodesDir[0]; ++i)
+            {
+                const label n = i + j*sx;
+                const label iL = max(i - 1, label(0));
+                const label iR = min(i + 1, geom.nNodesDir[0] - 1);
+                const label jL = max(j - 1, label(0));
+                const label jR = min(j + 1, geom.nNodesDir[1] - 1);
+                const scalar gx = (nodes_.Z[iR + j*sx] - nodes_.Z[iL + j*sx])
+                    /((iR - iL)*geom.dx[0]);
+                const scalar gy = (nodes_.Z[i + jR*sx] - nodes_.Z[i + jL*sx])
+                    /((jR - jL)*geom.dx[1]);
+                kappaNode_[n] = 1/(1 + gx*gx + gy*gy);
+            }
+        }
+    }
+
+    // The columns: the cloud of the start time, or the release
+    const Time& runTime = grid.mesh().time();
+    if (particleCloudIO::found(grid.mesh(), cloudName, runTime.timeName()))
+    {
+        const wordList missing = particleCloudIO::read
+        (
+            particles_, grid.mesh(), cloudName, runTime.timeName()
+        );
+        Info<< "Read " << particles_.size() << " columns of cloud "
+            << cloudName << " at time " << runTime.timeName() << endl;
+        if (!missing.empty())
+        {
+            WarningInFunction
+                << "fields " << missing << " of cloud " << cloudName
+                << " are missing at time " << runTime.timeName()
+                << ": started from their initial values" << endl;
+        }
+    }
+    else
+    {
+        if (!dict.isDict("release"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "no cloud " << cloudName << " at time "
+                << runTime.timeName() << " and no release sub-dictionary:"
+                << " nothing to simulate" << exit(FatalIOError);
+        }
+        autoPtr<releaseModel> release = releaseModel::New
+        (
+            dict.subDict("release"), *topography_, caseDir
+        );
+        Info<< "Release: ";
+        release->describe(Info);
+        Info<< endl;
+        seed(*release);
+    }
+
+    scalar mMax = 0;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        mMax = max(mMax, particles_.column(particleArrays::M)[i]);
+    }
+    massTol_ = 1e-12*mMax;
+    flagged_.reserve(particles_.size());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::depthAveragedFlow::describe(Ostream& os) const
+{
+    const gridGeometry& g = grid_.geometry();
+    const char* sideNames[2][2] = {{"x min", "x max"}, {"y min", "y max"}};
+    os  << "dampmFoam physics (terms not listed as active cost nothing):" << nl
+        << "    columns         " << particles_.size() << ", "
+        << nPerCell_*nPerCell_ << " per cell, rho = " << rho_ << " kg/m^3"
+        << nl << "    shape function  ";
+    shape_->describe(os);
+    os  << nl << "    pressure force  " << pressureFormNames[pressureForm_]
+        << " form, slope correction " << (slopeCorrection_ ? "on" : "off")
+        << ", hMin = " << hMin_ << " m" << nl << "    topography      ";
+    topography_->describe(os);
+    os  << nl << "    bed friction    ";
+    friction_->describe(os);
+    os  << (friction_->active() ? "  [active]" : "") << nl
+        << "    rheology        ";
+    rheology_->describe(os);
+    os  << (rheology_->active() ? "  [active]" : "") << nl
+        << "    sides          ";
+    for (int d = 0; d < 2; ++d)
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            os  << ' ' << sideNames[d][s] << ' '
+                << (sides_.wall[d][s] ? "wall" : "open") << ';';
+        }
+    }
+    os  << nl << "    grid            " << g.nCells[0] << " x " << g.nCells[1]
+        << " cells of " << g.dx[0] << " x " << g.dx[1] << " m" << endl;
+}
+
+
+void Foam::depthAveragedFlow::particlesToGrid()
+{
+    if (prepared_)
+    {
+        return;
+    }
+    const gridGeometry& g = grid_.geometry();
+    particles_.sortByCell(g);
+
+    double* mom[2] = {nodes_.px.data(), nodes_.py.data()};
+    const shallowColumns cols = columns();
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            particlesToGridMomentum<2>
+            (
+                g, schedule_, kernel, particles_, gradU_,
+                nodes_.mass.data(), mom, A_, nodes_.cover.data()
+            );
+        }
+    );
+    nodeHeights(nodes_, rho_, massTol_, slopeCorrection_, kappaNode_.data());
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            gatherSurface(g, kernel, nodes_, cols, hMin_, slopeCorrection_);
+        }
+    );
+    prepared_ = true;
+}
+
+
+Foam::scalar Foam::depthAveragedFlow::stableDeltaT
+(
+    const scalar maxCo,
+    word& limit
+) const
+{
+    const gridGeometry& g = grid_.geometry();
+    const label n = particles_.size();
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    const double* h = particles_.column(h_);
+    const double gravity = g_;
+
+    double maxWave = 0;
+    #pragma omp parallel for schedule(static) reduction(max:maxWave)
+    for (label i = 0; i < n; ++i)
+    {
+        const double c = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i])
+          + std::sqrt(gravity*max(h[i], 0.0));
+        maxWave = c > maxWave ? c : maxWave;
+    }
+
+    const scalar delta = min(g.dx[0], g.dx[1]);
+    scalar dt = maxWave > 0 ? maxCo*delta/maxWave : GREAT;
+    limit = "wave";
+    const scalar muMax = rheology_->active() ? rheology_->maxViscosity() : 0;
+    if (muMax > 0)
+    {
+        const scalar dtVisc = maxCo*rho_*delta*delta/(4*muMax);
+        if (dtVisc < dt)
+        {
+            dt = dtVisc;
+            limit = "viscous";
+        }
+    }
+    return dt;
+}
+
+
+void Foam::depthAveragedFlow::computeForces()
+{
+    const gridGeometry& g = grid_.geometry();
+    const shallowParticles view = modelView();
+    const bool basal = basalActive();
+    const bool stress = rheology_->active();
+
+    if (basal)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            zeroArray(particles_.column(basal_ + k), particles_.size());
+        }
+        if (friction_->active())
+        {
+            friction_->addResistance(view);
+        }
+        rheology_->addResistance(view);
+    }
+    if (stress)
+    {
+        rheology_->stress(view);
+    }
+
+    const shallowColumns cols = columns();
+    const label* cellStart = particles_.cellStart().data();
+    const bool gradientForm = pressureForm_ == pressureFormType::gradient;
+
+    // One instantiation per combination of terms: a term a case does not
+    // select costs nothing in the scatter
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            typedef std::decay_t<decltype(kernel)> K;
+            auto run = [&](auto gf, auto st, auto ba)
+            {
+                scatterForces<K, gf(), st(), ba()>
+                (
+                    g, schedule_, cellStart, kernel, nodes_, cols, rho_, g_
+                );
+            };
+            typedef std::true_type T;
+            typedef std::false_type F;
+            if (gradientForm)
+            {
+                if (stress)
+                {
+                    basal ? run(T(), T(), T()) : run(T(), T(), F());
+                }
+                else
+                {
+                    basal ? run(T(), F(), T()) : run(T(), F(), F());
+                }
+            }
+            else
+            {
+                if (stress)
+                {
+                    basal ? run(F(), T(), T()) : run(F(), T(), F());
+                }
+                else
+                {
+                    basal ? run(F(), F(), T()) : run(F(), F(), F());
+                }
+            }
+        }
+    );
+}
+
+
+void Foam::depthAveragedFlow::updateGrid(const scalar dt)
+{
+    resistanceUpdate
+    (
+        grid_.geometry(), nodes_, sides_, dt, massTol_, basalActive()
+    );
+}
+
+
+Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
+{
+    const gridGeometry& g = grid_.geometry();
+    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            gridToParticlesVelocity<2>(g, kernel, particles_, gradU_, vel);
+        }
+    );
+
+    // Positions, kinematic basal areas, walls and open sides
+    const label n = particles_.size();
+    double* A = particles_.column(A_);
+    const double* C[4] =
+    {
+        particles_.column(gradU_), particles_.column(gradU_ + 1),
+        particles_.column(gradU_ + 2), particles_.column(gradU_ + 3)
+    };
+    double* x = particles_.column(particleArrays::X);
+    double* y = particles_.column(particleArrays::Y);
+    double* ux = particles_.column(particleArrays::UX);
+    double* uy = particles_.column(particleArrays::UY);
+    const double* m = particles_.column(particleArrays::M);
+    flagged_.assign(n, 0);
+    const domainSides sides = sides_;
+    double removed = 0;
+    label nRemoved = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:removed, nRemoved)
+    for (label i = 0; i < n; ++i)
+    {
+        double* pos[2] = {&x[i], &y[i]};
+        double* vel[2] = {&ux[i], &uy[i]};
+        *pos[0] += dt*ux[i];
+        *pos[1] += dt*uy[i];
+        // The footprint follows the flow: A <- A det(I + dt C)
+        const double J =
+            (1 + dt*C[0][i])*(1 + dt*C[3][i]) - dt*dt*C[1][i]*C[2][i];
+        A[i] *= J > 0.1 ? J : 0.1;
+        for (int d = 0; d < 2 && !flagged_[i]; ++d)
+        {
+            const double eps = 1e-6*g.dx[d];
+            const double lo = g.origin[d];
+            const double hi = g.upper(d);
+            if (*pos[d] < lo || *pos[d] > hi)
+            {
+                const int s = *pos[d] > hi;
+                if (sides.wall[d][s])
+                {
+                    *pos[d] = s ? hi - eps : lo + eps;
+                    *vel[d] = 0;
+                }
+                else
+                {
+                    flagged_[i] = 1;
+                    removed += m[i];
+                    ++nRemoved;
+                }
+            }
+        }
+    }
+    if (nRemoved)
+    {
+        particles_.removeFlagged(flagged_);
+        outflowMass_ += removed;
+    }
+    prepared_ = false;
+    return removed;
+}
+
+
+void Foam::depthAveragedFlow::updateOutputFields()
+{
+    particlesToGrid();
+
+    const fvMesh& mesh = grid_.mesh();
+    const scalar zLo = mesh.bounds().min().z();
+    const scalar zHi = mesh.bounds().max().z();
+    const scalar eps = 1e-6*max(zHi - zLo, scalar(1));
+
+    const label n = particles_.size();
+    double* z = particles_.column(particleArrays::Z);
+    double* uz = particles_.column(particleArrays::UZ);
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    const double* h = particles_.column(h_);
+    const double* Zb = particles_.column(Zb_);
+    const double* gx = particles_.column(gradZ_);
+    const double* gy = particles_.column(gradZ_ + 1);
+
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        // Free surface, kept inside the mesh so that readers find the cell
+        z[i] = min(max(Zb[i] + h[i], zLo + eps), zHi - eps);
+        uz[i] = ux[i]*gx[i] + uy[i]*gy[i];
+    }
+}
+
+
+void Foam::depthAveragedFlow::diagnostics
+(
+    scalar& mass,
+    scalar& kineticEnergy,
+    scalar& maxSpeed,
+    boundBox& extent
+) const
+{
+    const label n = particles_.size();
+    const double* x = particles_.column(particleArrays::X);
+    const double* y = particles_.column(particleArrays::Y);
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    const double* m = particles_.column(particleArrays::M);
+    const double* gx = particles_.column(gradZ_);
+    const double* gy = particles_.column(gradZ_ + 1);
+
+    double M = 0, KE = 0, vMax = 0;
+    double xMin = GREAT, xMax = -GREAT, yMin = GREAT, yMax = -GREAT;
+    #pragma omp parallel for schedule(static)         reduction(+:M, KE) reduction(max:vMax, xMax, yMax)         reduction(min:xMin, yMin)
+    for (label i = 0; i < n; ++i)
+    {
+        // Speed along the bed: the vertical component follows the terrain
+        const double w = ux[i]*gx[i] + uy[i]*gy[i];
+        const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
+        M += m[i];
+        KE += 0.5*m[i]*v2;
+        vMax = v2 > vMax ? v2 : vMax;
+        xMin = x[i] < xMin ? x[i] : xMin;
+        xMax = x[i] > xMax ? x[i] : xMax;
+        yMin = y[i] < yMin ? y[i] : yMin;
+        yMax = y[i] > yMax ? y[i] : yMax;
+    }
+    mass = M;
+    kineticEnergy = KE;
+    maxSpeed = std::sqrt(vMax);
+    extent = n
+        ? boundBox(point(xMin, yMin, 0), point(xMax, yMax, 0))
+        : boundBox(point::zero, point::zero);
+}
+
+
+bool Foam::depthAveragedFlow::finite() const
+{
+    const label n = particles_.size();
+    bool ok = true;
+    for (const label c : {label(particleArrays::X), label(particleArrays::Y),
+         label(particleArrays::UX), label(particleArrays::UY), h_})
+    {
+        const double* v = particles_.column(c);
+        #pragma omp parallel for schedule(static) reduction(&&:ok)
+        for (label i = 0; i < n; ++i)
+        {
+            ok = ok && std::isfinite(v[i]);
+        }
+    }
+    return ok;
+}
+
+
+// ************************************************************************* //

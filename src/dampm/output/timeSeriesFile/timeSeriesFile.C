@@ -1,0 +1,68 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "timeSeriesFile.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::timeSeriesFile::timeSeriesFile
+(
+    const Time& runTime,
+    const word& name,
+    const word& file,
+    const wordList& columns,
+    const wordList& description
+)
+:
+    columns_(columns)
+{
+    const fileName dir =
+        runTime.globalPath()/"postProcessing"/name
+       /runTime.timeName(runTime.startTime().value());
+    mkDir(dir);
+    os_.reset(new OFstream(dir/(file + ".dat")));
+    os_->precision(10);
+
+    OFstream& os = *os_;
+    os  << "# " << name << ": " << file << nl;
+    for (const word& line : description)
+    {
+        os  << "# " << line.c_str() << nl;
+    }
+    os  << '#';
+    for (const word& c : columns_)
+    {
+        os  << ' ' << c;
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::timeSeriesFile::write(const UList<scalar>& row)
+{
+    if (row.size() != columns_.size())
+    {
+        FatalErrorInFunction
+            << row.size() << " values for the " << columns_.size()
+            << " columns of " << os_->name() << abort(FatalError);
+    }
+    OFstream& os = *os_;
+    forAll(row, i)
+    {
+        os  << (i ? " " : "") << row[i];
+    }
+    os  << endl;
+}
+
+
+// ************************************************************************* //

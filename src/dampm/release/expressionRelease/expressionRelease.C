@@ -1,0 +1,61 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "expressionRelease.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace releaseModels
+{
+    defineTypeNameAndDebug(expressionRelease, 0);
+    addToRunTimeSelectionTable(releaseModel, expressionRelease, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::releaseModels::expressionRelease::expressionRelease
+(
+    const dictionary& dict,
+    const topographyModel& topography,
+    const fileName& caseDir
+)
+:
+    releaseModel(dict, topography, caseDir),
+    height_(dict, "height", wordList({"x", "y", "Z"}))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::releaseModels::expressionRelease::height
+(
+    const scalar x,
+    const scalar y
+) const
+{
+    const scalar vars[3] = {x, y, topography_.Z(x, y)};
+    return max(height_.value(vars), scalar(0));
+}
+
+
+void Foam::releaseModels::expressionRelease::describe(Ostream& os) const
+{
+    os  << "expression (height = ";
+    height_.write(os);
+    os  << ", U = " << U_ << ')';
+}
+
+
+// ************************************************************************* //

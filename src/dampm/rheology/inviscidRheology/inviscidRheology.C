@@ -1,0 +1,54 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "inviscidRheology.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace rheologyModels
+{
+    defineTypeNameAndDebug(inviscidRheology, 0);
+    addToRunTimeSelectionTable(rheologyModel, inviscidRheology, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rheologyModels::inviscidRheology::inviscidRheology
+(
+    const dictionary& coeffs
+)
+:
+    rheologyModel(coeffs)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::rheologyModels::inviscidRheology::stress
+(
+    const shallowParticles& p
+) const
+{
+    viscousStress(p, [](double) { return 0.0; });
+}
+
+
+void Foam::rheologyModels::inviscidRheology::describe(Ostream& os) const
+{
+    os  << "inviscid (no stress computed)";
+}
+
+
+// ************************************************************************* //

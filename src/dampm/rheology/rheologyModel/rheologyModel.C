@@ -1,0 +1,45 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "rheologyModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(rheologyModel, 0);
+    defineRunTimeSelectionTable(rheologyModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::scalar Foam::rheologyModel::readNonNegative(const word& key) const
+{
+    const scalar value = coeffs_.get<scalar>(key);
+    if (!(value >= 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << key << " = " << value << " is invalid; allowed: " << key
+            << " >= 0" << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rheologyModel::rheologyModel(const dictionary& coeffs)
+:
+    coeffs_(coeffs)
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,60 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "expressionTopography.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace topographyModels
+{
+    defineTypeNameAndDebug(expressionTopography, 0);
+    addToRunTimeSelectionTable(topographyModel, expressionTopography, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::topographyModels::expressionTopography::expressionTopography
+(
+    const dictionary& coeffs,
+    const fileName& caseDir
+)
+:
+    topographyModel(coeffs, caseDir),
+    Z_(coeffs, "Z", wordList({"x", "y"}))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::topographyModels::expressionTopography::Z
+(
+    const scalar x,
+    const scalar y
+) const
+{
+    const scalar xy[2] = {x, y};
+    return Z_.value(xy);
+}
+
+
+void Foam::topographyModels::expressionTopography::describe(Ostream& os) const
+{
+    os  << "expression (Z = ";
+    Z_.write(os);
+    os  << ')';
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,863 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "terrainRaster.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include <gdal.h>
+#include <cpl_error.h>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdint>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::terrainRaster::noDataPolicy>
+Foam::terrainRaster::noDataPolicyNames
+({
+    { noDataPolicy::fail, "fail" },
+    { noDataPolicy::fill, "fill" },
+});
+
+
+namespace
+{
+
+static_assert
+(
+    std::is_same<Foam::scalar, double>::value,
+    "terrainRaster reads GDAL bands as double into scalar samples"
+);
+
+//- NODATA_value of written rasters
+constexpr double writtenNoData = -9999;
+
+//- Header keys of an ESRI ASCII grid (lower case) and their indices
+enum ascKey
+{
+    NCOLS, NROWS, XLLCORNER, XLLCENTER, YLLCORNER, YLLCENTER,
+    CELLSIZE, DX, DY, NODATA, nAscKeys
+};
+
+const char* const ascKeyNames[nAscKeys] =
+{
+    "ncols", "nrows", "xllcorner", "xllcenter", "yllcorner", "yllcenter",
+    "cellsize", "dx", "dy", "NODATA_value"
+};
+
+const char* const ascHeader =
+    "an ESRI ASCII grid header has the keys ncols, nrows, xllcorner or"
+    " xllcenter, yllcorner or yllcenter, cellsize (or dx and dy) and"
+    " optionally NODATA_value (any case), each followed by one number";
+
+
+//- Find the next blank-separated word of line from pos: [b, e)
+bool nextWord
+(
+    const std::string& line,
+    std::string::size_type& pos,
+    std::string::size_type& b,
+    std::string::size_type& e
+)
+{
+    static const char* const blanks = " \t\r\f\v";
+    b = line.find_first_not_of(blanks, pos);
+    if (b == std::string::npos)
+    {
+        pos = line.size();
+        return false;
+    }
+    e = std::min(line.find_first_of(blanks, b), line.size());
+    pos = e;
+    return true;
+}
+
+
+//- Parse line[b, e) as a whole number (nan and inf included)
+bool parseNumber
+(
+    const std::string& line,
+    const std::string::size_type b,
+    const std::string::size_type e,
+    double& v
+)
+{
+    char* stop = nullptr;
+    v = std::strtod(line.c_str() + b, &stop);
+    return stop == line.c_str() + e;
+}
+
+
+//- Are a and b the same but for case?
+bool sameKey(const std::string& a, const char* b)
+{
+    std::string::size_type i = 0;
+    for (; i < a.size() && b[i]; ++i)
+    {
+        if (std::tolower(uint8_t(a[i])) != std::tolower(uint8_t(b[i])))
+        {
+            return false;
+        }
+    }
+    return i == a.size() && !b[i];
+}
+
+
+//- Is v a positive integer that fits a label?
+bool isCount(const double v)
+{
+    return v >= 1 && v < 1e9 && v == std::floor(v);
+}
+
+
+//- Shortest text that reads back as v exactly
+std::string exactText(const double v)
+{
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof(buf), v);
+    return std::string(buf, res.ptr);
+}
+
+
+//- A GDAL dataset closed when it goes out of scope
+struct gdalDataset
+{
+    GDALDatasetH h;
+
+    explicit gdalDataset(GDALDatasetH handle)
+    :
+        h(handle)
+    {}
+
+    gdalDataset(const gdalDataset&) = delete;
+    void operator=(const gdalDataset&) = delete;
+
+    ~gdalDataset()
+    {
+        if (h)
+        {
+            GDALClose(h);
+        }
+    }
+};
+
+
+//- Register the GDAL drivers once
+void registerGdal()
+{
+    static const bool registered = (GDALAllRegister(), true);
+    (void)registered;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::terrainRaster::readAsc()
+{
+    IFstream is(file_);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(is)
+            << "cannot open the ESRI ASCII grid " << file_
+            << exit(FatalIOError);
+    }
+    std::istream& in = is.stdStream();
+
+    // Header: key-value lines up to the first line that starts with a number
+    double header[nAscKeys] = {};
+    label keyLine[nAscKeys] = {};
+    std::string line;
+    std::string::size_type pos, b, e;
+    label lineNo = 0;
+    bool pending = false;
+
+    while (std::getline(in, line))
+    {
+        is.lineNumber(++lineNo);
+        if (lineNo == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        {
+            line.erase(0, 3);
+        }
+        pos = 0;
+        double v;
+        if (!nextWord(line, pos, b, e))
+        {
+            continue;
+        }
+        if (parseNumber(line, b, e, v))
+        {
+            pending = true;
+            break;
+        }
+
+        const std::string key(line, b, e - b);
+        int k = 0;
+        while (k < nAscKeys && !sameKey(key, ascKeyNames[k]))
+        {
+            ++k;
+        }
+        if (k == nAscKeys)
+        {
+            FatalIOErrorInFunction(is)
+                << "unknown header key '" << line.substr(b, e - b).c_str()
+                << "' in the ESRI ASCII grid " << file_ << "; " << ascHeader
+                << exit(FatalIOError);
+        }
+
+        // Keys that give the same thing twice
+        int other = -1;
+        switch (k)
+        {
+            case XLLCORNER: other = XLLCENTER; break;
+            case XLLCENTER: other = XLLCORNER; break;
+            case YLLCORNER: other = YLLCENTER; break;
+            case YLLCENTER: other = YLLCORNER; break;
+            case CELLSIZE: other = keyLine[DX] ? DX : DY; break;
+            case DX: case DY: other = CELLSIZE; break;
+            default: break;
+        }
+        if (keyLine[k] || (other >= 0 && keyLine[other]))
+        {
+            const int first = keyLine[k] ? k : other;
+            FatalIOErrorInFunction(is)
+                << "duplicate header key '" << ascKeyNames[k]
+                << "': '" << ascKeyNames[first] << "' was given at line "
+                << keyLine[first] << "; " << ascHeader
+                << exit(FatalIOError);
+        }
+
+        if
+        (
+            !nextWord(line, pos, b, e)
+         || !parseNumber(line, b, e, v)
+         || nextWord(line, pos, b, e)
+        )
+        {
+            FatalIOErrorInFunction(is)
+                << "header key '" << ascKeyNames[k] << "' needs one number: '"
+                << line.c_str() << "'; " << ascHeader
+                << exit(FatalIOError);
+        }
+        header[k] = v;
+        keyLine[k] = lineNo;
+    }
+
+    // Check the header
+    const bool xCorner = keyLine[XLLCORNER];
+    const bool yCorner = keyLine[YLLCORNER];
+    const int required[] =
+    {
+        NCOLS, NROWS, xCorner ? XLLCORNER : XLLCENTER,
+        yCorner ? YLLCORNER : YLLCENTER,
+        keyLine[CELLSIZE] || (!keyLine[DX] && !keyLine[DY])
+      ? CELLSIZE : (keyLine[DX] ? DY : DX)
+    };
+    for (const int k : required)
+    {
+        if (!keyLine[k])
+        {
+            FatalIOErrorInFunction(is)
+                << "missing header key '" << ascKeyNames[k]
+                << "' in the ESRI ASCII grid " << file_ << "; " << ascHeader
+                << exit(FatalIOError);
+        }
+    }
+    if (xCorner != yCorner)
+    {
+        FatalIOErrorInFunction(is)
+            << "header keys '" << ascKeyNames[required[2]] << "' and '"
+            << ascKeyNames[required[3]] << "' mix the corner and centre"
+            << " forms; allowed: xllcorner with yllcorner, or xllcenter with"
+            << " yllcenter"
+            << exit(FatalIOError);
+    }
+    for (const int k : {NCOLS, NROWS})
+    {
+        if (!isCount(header[k]))
+        {
+            is.lineNumber(keyLine[k]);
+            FatalIOErrorInFunction(is)
+                << "header key '" << ascKeyNames[k] << "' = " << header[k]
+                << " is invalid; allowed: a positive integer"
+                << exit(FatalIOError);
+        }
+    }
+    for (const int k : {CELLSIZE, DX, DY})
+    {
+        if (keyLine[k] && !(header[k] > 0 && std::isfinite(header[k])))
+        {
+            is.lineNumber(keyLine[k]);
+            FatalIOErrorInFunction(is)
+                << "header key '" << ascKeyNames[k] << "' = " << header[k]
+                << " is invalid; allowed: a finite number > 0 [m]"
+                << exit(FatalIOError);
+        }
+    }
+    for (const int k : required)
+    {
+        if (!std::isfinite(header[k]))
+        {
+            is.lineNumber(keyLine[k]);
+            FatalIOErrorInFunction(is)
+                << "header key '" << ascKeyNames[k] << "' = " << header[k]
+                << " is invalid; allowed: a finite number"
+                << exit(FatalIOError);
+        }
+    }
+    if (header[NCOLS]*header[NROWS] > labelMax)
+    {
+        FatalIOErrorInFunction(is)
+            << "ncols x nrows = " << header[NCOLS] << " x " << header[NROWS]
+            << " is too large; allowed: at most " << labelMax << " values"
+            << exit(FatalIOError);
+    }
+
+    nx_ = label(header[NCOLS]);
+    ny_ = label(header[NROWS]);
+    dx_ = keyLine[CELLSIZE] ? header[CELLSIZE] : header[DX];
+    dy_ = keyLine[CELLSIZE] ? header[CELLSIZE] : header[DY];
+    mapOrigin_.x() = header[required[2]] + (xCorner ? dx_/2 : 0);
+    mapOrigin_.y() = header[required[3]] + (yCorner ? dy_/2 : 0);
+    const bool hasNoData = keyLine[NODATA];
+    const double noData = header[NODATA];
+
+    // Samples: rows north to south, any line breaks
+    const label n = nx_*ny_;
+    values_.setSize(n);
+    label count = 0;
+    while (pending || std::getline(in, line))
+    {
+        if (!pending)
+        {
+            is.lineNumber(++lineNo);
+        }
+        pending = false;
+        pos = 0;
+        while (nextWord(line, pos, b, e))
+        {
+            double v;
+            if (!parseNumber(line, b, e, v))
+            {
+                FatalIOErrorInFunction(is)
+                    << "value '" << line.substr(b, e - b).c_str() << "' (row "
+                    << count/nx_ + 1 << ", column " << count % nx_ + 1
+                    << ") is not a number; expected ncols x nrows = "
+                    << nx_ << " x " << ny_ << " numbers after the header"
+                    << exit(FatalIOError);
+            }
+            if (count == n)
+            {
+                FatalIOErrorInFunction(is)
+                    << "too many values: '" << line.substr(b, e - b).c_str()
+                    << "' follows the last of ncols x nrows = " << nx_
+                    << " x " << ny_ << " = " << n << " values"
+                    << exit(FatalIOError);
+            }
+            if (!std::isfinite(v) || (hasNoData && v == noData))
+            {
+                v = std::numeric_limits<double>::quiet_NaN();
+            }
+            const label r = count/nx_;
+            values_[count - r*nx_ + nx_*(ny_ - 1 - r)] = v;
+            ++count;
+        }
+    }
+    if (count < n)
+    {
+        FatalIOErrorInFunction(is)
+            << "too few values: found " << count << ", expected ncols x"
+            << " nrows = " << nx_ << " x " << ny_ << " = " << n
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::terrainRaster::readGeoTiff()
+{
+    registerGdal();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLErrorReset();
+    gdalDataset ds(GDALOpen(file_.c_str(), GA_ReadOnly));
+    CPLPopErrorHandler();
+    if (!ds.h)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "GDAL cannot open the GeoTIFF " << file_ << ": "
+            << CPLGetLastErrorMsg()
+            << exit(FatalIOError);
+    }
+
+    double gt[6];
+    if (GDALGetGeoTransform(ds.h, gt) != CE_None)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "the GeoTIFF " << file_ << " has no geotransform; expected a"
+            << " georeferenced raster"
+            << exit(FatalIOError);
+    }
+    if (gt[2] != 0 || gt[4] != 0 || !(gt[1] > 0) || !(gt[5] != 0))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "the geotransform of the GeoTIFF " << file_ << " ("
+            << gt[0] << ' ' << gt[1] << ' ' << gt[2] << ' ' << gt[3] << ' '
+            << gt[4] << ' ' << gt[5] << ") is rotated or degenerate;"
+            << " allowed: pixel width > 0, pixel height != 0 and zero"
+            << " rotation terms"
+            << exit(FatalIOError);
+    }
+    if (GDALGetRasterCount(ds.h) < 1)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "the GeoTIFF " << file_ << " has no raster band"
+            << exit(FatalIOError);
+    }
+
+    nx_ = GDALGetRasterXSize(ds.h);
+    ny_ = GDALGetRasterYSize(ds.h);
+    dx_ = gt[1];
+    dy_ = std::abs(gt[5]);
+    const char* wkt = GDALGetProjectionRef(ds.h);
+    projection_ = (wkt ? wkt : "");
+
+    // The geotransform locates the outer corner of pixel (0, 0); rows are
+    // north to south when the pixel height is negative
+    const bool northUp = gt[5] < 0;
+    mapOrigin_.x() = gt[0] + dx_/2;
+    mapOrigin_.y() = (northUp ? gt[3] + ny_*gt[5] : gt[3]) + dy_/2;
+
+    GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
+    int hasNoData = 0;
+    const double noData = GDALGetRasterNoDataValue(band, &hasNoData);
+
+    values_.setSize(label(nx_)*ny_);
+    for (label r = 0; r < ny_; ++r)
+    {
+        const label j = northUp ? ny_ - 1 - r : r;
+        if
+        (
+            GDALRasterIO
+            (
+                band, GF_Read, 0, r, nx_, 1, values_.data() + nx_*j,
+                nx_, 1, GDT_Float64, 0, 0
+            ) != CE_None
+        )
+        {
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+                << "GDAL cannot read row " << r + 1 << " of band 1 of the"
+                << " GeoTIFF " << file_ << ": " << CPLGetLastErrorMsg()
+                << exit(FatalIOError);
+        }
+    }
+    if (hasNoData)
+    {
+        for (scalar& v : values_)
+        {
+            if (v == noData)
+            {
+                v = std::numeric_limits<double>::quiet_NaN();
+            }
+        }
+    }
+}
+
+
+void Foam::terrainRaster::setGeometry()
+{
+    rdx_ = 1/dx_;
+    rdy_ = 1/dy_;
+    x0_ = mapOrigin_.x() - offset_.x();
+    y0_ = mapOrigin_.y() - offset_.y();
+}
+
+
+Foam::label Foam::terrainRaster::updateRange()
+{
+    label nInvalid = 0;
+    minValue_ = std::numeric_limits<double>::infinity();
+    maxValue_ = -minValue_;
+    for (const scalar v : values_)
+    {
+        if (std::isfinite(v))
+        {
+            minValue_ = std::min(minValue_, v);
+            maxValue_ = std::max(maxValue_, v);
+        }
+        else
+        {
+            ++nInvalid;
+        }
+    }
+    return nInvalid;
+}
+
+
+void Foam::terrainRaster::applyNoDataPolicy(const noDataPolicy policy)
+{
+    nNoData_ = updateRange();
+    if (nNoData_ == values_.size())
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "the raster " << file_ << " has no valid value: all "
+            << nNoData_ << " cells are NODATA, NaN or inf"
+            << exit(FatalIOError);
+    }
+    if (nNoData_ == 0)
+    {
+        return;
+    }
+
+    if (policy == noDataPolicy::fail)
+    {
+        // The first in file order: rows north to south
+        label k = 0;
+        while (std::isfinite(values_[(ny_ - 1 - k/nx_)*nx_ + k % nx_]))
+        {
+            ++k;
+        }
+        const label r = k/nx_;
+        const label i = k % nx_;
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "the raster " << file_ << " has " << nNoData_
+            << " NODATA cells (NODATA_value, NaN or inf); the first is at"
+            << " row " << r + 1 << ", column " << i + 1 << " (row 1 = north)"
+            << ", map coordinates ("
+            << exactText(mapOrigin_.x() + i*dx_).c_str() << ' '
+            << exactText(mapOrigin_.y() + (ny_ - 1 - r)*dy_).c_str() << ")."
+            << " Allowed: a raster without NODATA, or the NODATA policy"
+            << " 'fill' to fill them from their neighbours"
+            << exit(FatalIOError);
+    }
+
+    fillNoData();
+    Info<< "terrainRaster: filled " << nNoData_ << " NODATA cells of "
+        << file_ << " from their valid neighbours" << endl;
+}
+
+
+void Foam::terrainRaster::fillNoData()
+{
+    std::vector<label> todo, next;
+    for (label k = 0; k < values_.size(); ++k)
+    {
+        if (!std::isfinite(values_[k]))
+        {
+            todo.push_back(k);
+        }
+    }
+
+    // Layer by layer from the valid data: each sweep fills the cells that
+    // touch valid (or already filled) ones with their average, and applies
+    // the layer after the sweep so that the result is order-independent
+    std::vector<std::pair<label, scalar>> layer;
+    while (!todo.empty())
+    {
+        layer.clear();
+        next.clear();
+        for (const label k : todo)
+        {
+            const label i = k % nx_;
+            const label j = k/nx_;
+            scalar sum = 0;
+            label n = 0;
+            for (label jj = max(j - 1, 0); jj <= min(j + 1, ny_ - 1); ++jj)
+            {
+                for (label ii = max(i - 1, 0); ii <= min(i + 1, nx_ - 1); ++ii)
+                {
+                    const scalar v = values_[ii + nx_*jj];
+                    if (std::isfinite(v))
+                    {
+                        sum += v;
+                        ++n;
+                    }
+                }
+            }
+            if (n)
+            {
+                layer.emplace_back(k, sum/n);
+            }
+            else
+            {
+                next.push_back(k);
+            }
+        }
+        for (const auto& kv : layer)
+        {
+            values_[kv.first] = kv.second;
+        }
+        todo.swap(next);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::terrainRaster::terrainRaster
+(
+    const fileName& file,
+    const noDataPolicy policy
+)
+:
+    file_(file),
+    nx_(0),
+    ny_(0),
+    dx_(1),
+    dy_(1),
+    mapOrigin_(Zero),
+    offset_(Zero),
+    x0_(0),
+    y0_(0),
+    rdx_(1),
+    rdy_(1),
+    values_(),
+    nNoData_(0),
+    projection_(),
+    minValue_(0),
+    maxValue_(0)
+{
+    file_.expand();
+    if (!isFile(file_))
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "cannot find the raster file " << file_ << "; expected an"
+            << " ESRI ASCII grid (.asc) or a GeoTIFF (.tif, .tiff)"
+            << exit(FatalIOError);
+    }
+
+    std::string ext(file_.ext());
+    std::transform
+    (
+        ext.begin(), ext.end(), ext.begin(),
+        [](unsigned char c) { return std::tolower(c); }
+    );
+    if (ext == "asc")
+    {
+        readAsc();
+    }
+    else if (ext == "tif" || ext == "tiff")
+    {
+        readGeoTiff();
+    }
+    else
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+            << "unknown raster file extension '." << file_.ext() << "' of "
+            << file_ << "; allowed: .asc (ESRI ASCII grid), .tif or .tiff"
+            << " (GeoTIFF)"
+            << exit(FatalIOError);
+    }
+
+    setGeometry();
+    applyNoDataPolicy(policy);
+}
+
+
+Foam::terrainRaster::terrainRaster
+(
+    const vector2D& origin,
+    const scalar dx,
+    const scalar dy,
+    const label nx,
+    const label ny,
+    const UList<scalar>& values,
+    const vector2D& offset,
+    const string& projection
+)
+:
+    file_(),
+    nx_(nx),
+    ny_(ny),
+    dx_(dx),
+    dy_(dy),
+    mapOrigin_(origin + offset),
+    offset_(offset),
+    x0_(0),
+    y0_(0),
+    rdx_(1),
+    rdy_(1),
+    values_(values),
+    nNoData_(0),
+    projection_(projection),
+    minValue_(0),
+    maxValue_(0)
+{
+    if
+    (
+        !(nx > 0 && ny > 0 && dx > 0 && dy > 0)
+     || values.size() != nx*ny
+    )
+    {
+        FatalErrorInFunction
+            << "invalid raster: nx = " << nx << ", ny = " << ny << ", dx = "
+            << dx << ", dy = " << dy << " and " << values.size()
+            << " values; allowed: nx, ny >= 1, dx, dy > 0 and nx*ny values"
+            << exit(FatalError);
+    }
+    setGeometry();
+    nNoData_ = updateRange();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::boundBox Foam::terrainRaster::bounds() const
+{
+    return boundBox
+    (
+        point(x(0), y(0), minValue_),
+        point(x(nx_ - 1), y(ny_ - 1), maxValue_)
+    );
+}
+
+
+void Foam::terrainRaster::setOffset(const vector2D& offset)
+{
+    offset_ = offset;
+    setGeometry();
+}
+
+
+void Foam::terrainRaster::writeAsc(const fileName& file) const
+{
+    mkDir(file.path());
+    OFstream os(file);
+    if (!os.good())
+    {
+        FatalIOErrorInFunction(os)
+            << "cannot write the ESRI ASCII grid " << file
+            << exit(FatalIOError);
+    }
+    std::ostream& out = os.stdStream();
+
+    const vector2D ll(mapLowerLeft());
+    out << "ncols        " << nx_ << '\n'
+        << "nrows        " << ny_ << '\n'
+        << "xllcorner    " << exactText(ll.x()) << '\n'
+        << "yllcorner    " << exactText(ll.y()) << '\n';
+    if (dx_ == dy_)
+    {
+        out << "cellsize     " << exactText(dx_) << '\n';
+    }
+    else
+    {
+        out << "dx           " << exactText(dx_) << '\n'
+            << "dy           " << exactText(dy_) << '\n';
+    }
+    out << "NODATA_value " << exactText(writtenNoData) << '\n';
+
+    char buf[32];
+    for (label j = ny_ - 1; j >= 0; --j)
+    {
+        for (label i = 0; i < nx_; ++i)
+        {
+            const scalar v = values_[i + nx_*j];
+            const auto res = std::to_chars
+            (
+                buf, buf + sizeof(buf), std::isfinite(v) ? v : writtenNoData
+            );
+            if (i)
+            {
+                out << ' ';
+            }
+            out.write(buf, res.ptr - buf);
+        }
+        out << '\n';
+    }
+    out.flush();
+    if (!out.good())
+    {
+        FatalIOErrorInFunction(os)
+            << "cannot write the ESRI ASCII grid " << file
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::terrainRaster::writeGeoTiff
+(
+    const fileName& file,
+    const sampleType type
+) const
+{
+    registerGdal();
+    mkDir(file.path());
+    GDALDriverH driver = GDALGetDriverByName("GTiff");
+    CPLErrorReset();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    bool created = false;
+    {
+        gdalDataset ds
+        (
+            driver
+          ? GDALCreate
+            (
+                driver, file.c_str(), nx_, ny_, 1,
+                type == sampleType::float64 ? GDT_Float64 : GDT_Float32,
+                nullptr
+            )
+          : nullptr
+        );
+        created = (ds.h != nullptr);
+        if (created)
+        {
+            // The outer corner of the north-west pixel, rows north to south
+            const vector2D ll(mapLowerLeft());
+            double gt[6] = {ll.x(), dx_, 0, ll.y() + ny_*dy_, 0, -dy_};
+            GDALSetGeoTransform(ds.h, gt);
+            if (hasProjection())
+            {
+                GDALSetProjection(ds.h, projection_.c_str());
+            }
+            GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
+            GDALSetRasterNoDataValue(band, writtenNoData);
+
+            std::vector<double> row(nx_);
+            for (label r = 0; r < ny_; ++r)
+            {
+                const scalar* v = values_.cdata() + nx_*(ny_ - 1 - r);
+                for (label i = 0; i < nx_; ++i)
+                {
+                    row[i] = std::isfinite(v[i]) ? v[i] : writtenNoData;
+                }
+                if
+                (
+                    GDALRasterIO
+                    (
+                        band, GF_Write, 0, r, nx_, 1, row.data(), nx_, 1,
+                        GDT_Float64, 0, 0
+                    ) != CE_None
+                )
+                {
+                    break;
+                }
+            }
+        }
+    }
+    CPLPopErrorHandler();
+    if (!created || CPLGetLastErrorType() >= CE_Failure)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
+            << "GDAL cannot write the GeoTIFF " << file << ": "
+            << CPLGetLastErrorMsg()
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //

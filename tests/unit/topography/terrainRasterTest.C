@@ -1,0 +1,608 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    terrainRaster: ESRI ASCII grids in both header forms (spaces, tabs,
+    CRLF) read with the north row first; a planar terrain interpolated
+    exactly with its exact gradient; local coordinates and clamping; ASCII
+    and GeoTIFF round trips; the NODATA policies; every malformed file
+    refused with an error that names the file and the keyword; the real
+    hillsideKot600m.asc.
+
+\*---------------------------------------------------------------------------*/
+
+#include "terrainRaster.H"
+#include "OSspecific.H"
+#include "testCase.H"
+#include <gtest/gtest.h>
+#include <ogr_srs_api.h>
+#include <cpl_conv.h>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <vector>
+
+using namespace Foam;
+
+namespace
+{
+
+// Round-off of bilinear sums of O(|Z|) samples
+constexpr double relTol = 1e-12;
+
+// Map coordinates of the test rasters' lower-left corner: large, as real
+constexpr double X0 = 1.5e6;
+constexpr double Y0 = 5.2e6;
+
+const double notANumber = std::numeric_limits<double>::quiet_NaN();
+
+//- Planar terrain in map coordinates
+double planar(const double X, const double Y)
+{
+    return 1200 + 0.3*(X - X0) - 0.45*(Y - Y0);
+}
+
+
+//- Folder for the test files, beside the test meshes in the build folder
+fileName testDir()
+{
+    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"terrainRaster");
+    mkDir(dir);
+    return dir;
+}
+
+
+//- Write text as is (CRLF kept) and return the file name
+fileName writeText(const word& name, const std::string& text)
+{
+    const fileName file(testDir()/name);
+    std::ofstream(file, std::ios::binary) << text;
+    return file;
+}
+
+
+//- An ESRI ASCII grid: header lines (key, value) then rows north to south
+//  of z(i, j), j = 0 south, separated by sep, lines ended by eol
+template<class Fn>
+std::string ascText
+(
+    const std::vector<std::pair<std::string, std::string>>& header,
+    const int nx,
+    const int ny,
+    Fn&& z,
+    const std::string& sep = " ",
+    const std::string& eol = "\n"
+)
+{
+    std::ostringstream os;
+    os.precision(17);
+    for (const auto& kv : header)
+    {
+        os  << kv.first << sep << kv.second << eol;
+    }
+    for (int j = ny - 1; j >= 0; --j)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            os  << (i ? sep : "") << z(i, j);
+        }
+        os  << eol;
+    }
+    return os.str();
+}
+
+
+//- Text of an OpenFOAM error thrown by fn, with the file and line of an IO
+//  error ("" when none is thrown)
+template<class Fn>
+std::string ioErrorText(Fn&& fn)
+{
+    try
+    {
+        fn();
+    }
+    catch (const Foam::IOerror& err)
+    {
+        return err.message() + "\nfile: " + err.ioFileName() + " at line "
+            + std::to_string(err.ioStartLineNumber());
+    }
+    catch (const Foam::error& err)
+    {
+        return err.message();
+    }
+    return "";
+}
+
+
+//- 3 x 2 raster, north row 1 2 3, south row 4 5 6
+std::string smallText(const std::string& xKey, const std::string& yKey)
+{
+    return "ncols 3\nnrows 2\n" + xKey + " 10\n" + yKey + " 20\n"
+        "cellsize 2\n1 2 3\n4 5 6\n";
+}
+
+} // End anonymous namespace
+
+
+TEST(terrainRaster, PlanarTerrainIsInterpolatedExactlyWithExactGradient)
+{
+    const int nx = 7;
+    const int ny = 5;
+    const double h = 2.5;
+    // Tabs and CRLF; the sample (i, j) is at the cell centre
+    const fileName file = writeText
+    (
+        "planar.asc",
+        ascText
+        (
+            {
+                {"ncols", "7"}, {"nrows", "5"}, {"xllcorner", "1500000"},
+                {"yllcorner", "5200000"}, {"cellsize", "2.5"},
+                {"NODATA_value", "-9999"}
+            },
+            nx, ny,
+            [&](int i, int j)
+            {
+                return planar(X0 + (i + 0.5)*h, Y0 + (j + 0.5)*h);
+            },
+            "\t", "\r\n"
+        )
+    );
+
+    terrainRaster terrain(file);
+    terrain.setOffset(terrain.mapLowerLeft());
+    ASSERT_EQ(terrain.nx(), nx);
+    ASSERT_EQ(terrain.ny(), ny);
+    EXPECT_EQ(terrain.dx(), h);
+    EXPECT_EQ(terrain.dy(), h);
+    EXPECT_EQ(terrain.nNoData(), 0);
+    EXPECT_FALSE(terrain.hasProjection());
+
+    // Differences of O(|Z|) samples over h
+    const double Zmax = std::abs(terrain.maxValue());
+    const double gradTol = relTol*Zmax/h;
+
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    const boundBox bb(terrain.bounds());
+    for (int k = 0; k < 1000; ++k)
+    {
+        const double x = bb.min().x() + u(gen)*bb.span().x();
+        const double y = bb.min().y() + u(gen)*bb.span().y();
+        scalar Z, dZdx, dZdy;
+        terrain.evaluate(x, y, Z, dZdx, dZdy);
+        const double exact =
+            planar(x + terrain.offset().x(), y + terrain.offset().y());
+        EXPECT_NEAR(Z, exact, relTol*Zmax) << x << ' ' << y;
+        EXPECT_NEAR(dZdx, 0.3, gradTol);
+        EXPECT_NEAR(dZdy, -0.45, gradTol);
+    }
+}
+
+
+TEST(terrainRaster, NorthRowComesFirstInTheFile)
+{
+    const terrainRaster t
+    (
+        writeText("small.asc", smallText("xllcorner", "yllcorner"))
+    );
+    ASSERT_EQ(t.nx(), 3);
+    ASSERT_EQ(t.ny(), 2);
+    EXPECT_EQ(t.value(0, 1), 1);
+    EXPECT_EQ(t.value(2, 1), 3);
+    EXPECT_EQ(t.value(0, 0), 4);
+    EXPECT_EQ(t.value(2, 0), 6);
+    EXPECT_EQ(t.minValue(), 1);
+    EXPECT_EQ(t.maxValue(), 6);
+
+    // South-west sample at (11, 21); Z falls northwards by 3 over 2 m
+    scalar Z, dZdx, dZdy;
+    t.evaluate(11, 21, Z, dZdx, dZdy);
+    EXPECT_EQ(Z, 4);
+    EXPECT_EQ(dZdx, 0.5);
+    EXPECT_EQ(dZdy, -1.5);
+    EXPECT_EQ(t.Z(15, 23), 3);
+}
+
+
+TEST(terrainRaster, CornerAndCentreHeadersDifferByHalfACell)
+{
+    const terrainRaster corner
+    (
+        writeText("corner.asc", smallText("xllcorner", "yllcorner"))
+    );
+    // Same values, centre form, upper-case keys, tabs and CRLF
+    const terrainRaster centre
+    (
+        writeText
+        (
+            "centre.asc",
+            "NCOLS\t3\r\nNROWS\t2\r\nXLLCENTER\t10\r\nYLLCENTER\t20\r\n"
+            "CELLSIZE\t2\r\n1\t2\t3\r\n4\t5\t6\r\n"
+        )
+    );
+    EXPECT_EQ(corner.x(0), 11);
+    EXPECT_EQ(corner.y(0), 21);
+    EXPECT_EQ(centre.x(0), 10);
+    EXPECT_EQ(centre.y(0), 20);
+    EXPECT_EQ(corner.mapLowerLeft(), vector2D(10, 20));
+    EXPECT_EQ(centre.mapLowerLeft(), vector2D(9, 19));
+    EXPECT_EQ(corner.Z(11, 21), centre.Z(10, 20));
+
+    // dx and dy instead of cellsize
+    const terrainRaster dxdy
+    (
+        writeText
+        (
+            "dxdy.asc",
+            "ncols 3\nnrows 2\nxllcorner 10\nyllcorner 20\ndx 2\ndy 4\n"
+            "1 2 3\n4 5 6\n"
+        )
+    );
+    EXPECT_EQ(dxdy.dx(), 2);
+    EXPECT_EQ(dxdy.dy(), 4);
+    EXPECT_EQ(dxdy.y(1), 26);
+}
+
+
+TEST(terrainRaster, LocalCoordinatesSubtractTheOffset)
+{
+    const double h = 5;
+    const std::string text = ascText
+    (
+        {
+            {"ncols", "4"}, {"nrows", "3"}, {"xllcenter", "1500000"},
+            {"yllcenter", "5200000"}, {"cellsize", "5"}
+        },
+        4, 3,
+        [&](int i, int j) { return planar(X0 + i*h, Y0 + j*h); }
+    );
+    const terrainRaster global(writeText("offset.asc", text));
+    terrainRaster local(writeText("offset.asc", text));
+    const vector2D offset(X0 - 100, Y0 + 50);
+    local.setOffset(offset);
+
+    EXPECT_EQ(global.offset(), vector2D::zero);
+    EXPECT_EQ(local.offset(), offset);
+    EXPECT_EQ(local.x(0), 100);
+    EXPECT_EQ(local.y(0), -50);
+    EXPECT_EQ(local.bounds().max(), point(115, -40, local.maxValue()));
+
+    // Map coordinates resolve 1e-10 m at 5e6 m: Z to 1e-9 m
+    constexpr double mapTol = 1e-9;
+    EXPECT_NEAR(local.Z(107, -43), global.Z(X0 + 7, Y0 + 7), mapTol);
+    EXPECT_NEAR(local.Z(107, -43), planar(X0 + 7, Y0 + 7), mapTol);
+}
+
+
+TEST(terrainRaster, ClampsToTheNearestSampleOutsideTheHull)
+{
+    const terrainRaster t
+    (
+        writeText("clamp.asc", smallText("xllcenter", "yllcenter"))
+    );
+    // Samples at x = 10, 12, 14 and y = 20, 22
+    scalar Z, dZdx, dZdy;
+    t.evaluate(100, 21, Z, dZdx, dZdy);
+    EXPECT_EQ(Z, t.Z(14, 21));
+    EXPECT_EQ(dZdx, 0);
+    EXPECT_EQ(dZdy, -1.5);
+
+    t.evaluate(-100, -100, Z, dZdx, dZdy);
+    EXPECT_EQ(Z, 4);
+    EXPECT_EQ(dZdx, 0);
+    EXPECT_EQ(dZdy, 0);
+
+    t.evaluate(100, 100, Z, dZdx, dZdy);
+    EXPECT_EQ(Z, 3);
+}
+
+
+TEST(terrainRaster, AsciiWriteReadRoundTripIsExact)
+{
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const label nx = 9;
+    const label ny = 6;
+    scalarList values(nx*ny);
+    for (scalar& v : values)
+    {
+        v = 1000*u(gen);
+    }
+    values[nx + 2] = notANumber;
+    const vector2D offset(1.234567e6, 5.4321e6);
+
+    for (const scalar dy : {0.7, 1.3})
+    {
+        const terrainRaster nodes
+        (
+            vector2D(-3.5, 2.25), 0.7, dy, nx, ny, values, offset
+        );
+        EXPECT_EQ(nodes.nNoData(), 1);
+        const fileName file(testDir()/"roundTrip.asc");
+        nodes.writeAsc(file);
+
+        terrainRaster back(file, terrainRaster::noDataPolicy::fill);
+        back.setOffset(offset);
+        ASSERT_EQ(back.nx(), nx);
+        ASSERT_EQ(back.ny(), ny);
+        EXPECT_EQ(back.dx(), 0.7);
+        EXPECT_EQ(back.dy(), dy);
+        EXPECT_EQ(back.nNoData(), 1);
+        // Map coordinates round to 1e-9 m at 5e6 m
+        EXPECT_NEAR(back.x(0), -3.5, 1e-9);
+        EXPECT_NEAR(back.y(0), 2.25, 1e-9);
+        for (label k = 0; k < values.size(); ++k)
+        {
+            if (k != nx + 2)
+            {
+                EXPECT_EQ(back.values()[k], values[k]) << k;
+            }
+        }
+    }
+}
+
+
+TEST(terrainRaster, GeoTiffRoundTripKeepsGeoreferenceAndProjection)
+{
+    // MGI / Austria Lambert, as a WKT from PROJ's database
+    OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
+    ASSERT_EQ(OSRImportFromEPSG(srs, 31287), OGRERR_NONE);
+    char* wktPtr = nullptr;
+    OSRExportToWkt(srs, &wktPtr);
+    const string wkt(wktPtr);
+    CPLFree(wktPtr);
+    OSRDestroySpatialReference(srs);
+
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(1000, 2000);
+    const label nx = 8;
+    const label ny = 5;
+    scalarList values(nx*ny);
+    for (scalar& v : values)
+    {
+        v = u(gen);
+    }
+    values[3] = notANumber;
+    const vector2D offset(X0, Y0);
+    const terrainRaster nodes
+    (
+        vector2D(0, 0), 2.5, 2.5, nx, ny, values, offset, wkt
+    );
+
+    // Float32 rounds to 2^-24 relative
+    constexpr double float32Tol = 6e-8;
+    for (const auto type : {terrainRaster::sampleType::float64,
+                            terrainRaster::sampleType::float32})
+    {
+        const fileName file(testDir()/"roundTrip.tif");
+        nodes.writeGeoTiff(file, type);
+        terrainRaster back(file, terrainRaster::noDataPolicy::fill);
+        back.setOffset(offset);
+        ASSERT_EQ(back.nx(), nx);
+        ASSERT_EQ(back.ny(), ny);
+        EXPECT_EQ(back.dx(), 2.5);
+        EXPECT_EQ(back.dy(), 2.5);
+        EXPECT_EQ(back.nNoData(), 1);
+        EXPECT_NEAR(back.x(0), 0, 1e-9);
+        EXPECT_NEAR(back.y(0), 0, 1e-9);
+        ASSERT_TRUE(back.hasProjection());
+        EXPECT_NE(back.projection().find("31287"), std::string::npos);
+        const double tol =
+            (type == terrainRaster::sampleType::float64) ? 0 : float32Tol;
+        for (label k = 0; k < values.size(); ++k)
+        {
+            if (k != 3)
+            {
+                EXPECT_NEAR(back.values()[k], values[k], tol*values[k]);
+            }
+        }
+    }
+}
+
+
+TEST(terrainRaster, NoDataFailNamesFileCountAndFirstCell)
+{
+    const fileName file = writeText
+    (
+        "nodata.asc",
+        "ncols 4\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 10\n"
+        "NODATA_value -9999\n"
+        "1 2 3 4\n5 6 -9999.0 8\n9 nan 11 12\n"
+    );
+    const std::string msg = ioErrorText([&]{ terrainRaster t(file); });
+    EXPECT_NE(msg.find("file: " + file), std::string::npos) << msg;
+    EXPECT_NE(msg.find("has 2 NODATA cells"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("row 2, column 3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("(25 15)"), std::string::npos) << msg;
+}
+
+
+TEST(terrainRaster, NoDataFillIsFiniteAndBoundedByNeighbours)
+{
+    // A hole of 2 x 3 cells touching the west edge and a single cell
+    const label nx = 6;
+    const label ny = 5;
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(0, 100);
+    std::vector<double> z(nx*ny);
+    for (double& v : z)
+    {
+        v = u(gen);
+    }
+    for (const label k : {nx, nx + 1, 2*nx, 2*nx + 1, 3*nx, 3*nx + 1, 9})
+    {
+        z[k] = -9999;
+    }
+    const fileName file = writeText
+    (
+        "fill.asc",
+        ascText
+        (
+            {
+                {"ncols", "6"}, {"nrows", "5"}, {"xllcorner", "0"},
+                {"yllcorner", "0"}, {"cellsize", "1"}, {"NODATA_value", "-9999"}
+            },
+            nx, ny, [&](int i, int j) { return z[i + nx*j]; }
+        )
+    );
+    const terrainRaster t(file, terrainRaster::noDataPolicy::fill);
+    EXPECT_EQ(t.nNoData(), 7);
+
+    double validMin = 1e300, validMax = -1e300;
+    for (const double v : z)
+    {
+        if (v != -9999)
+        {
+            validMin = std::min(validMin, v);
+            validMax = std::max(validMax, v);
+        }
+    }
+    for (label j = 0; j < ny; ++j)
+    {
+        for (label i = 0; i < nx; ++i)
+        {
+            const double v = t.value(i, j);
+            ASSERT_TRUE(std::isfinite(v));
+            if (z[i + nx*j] != -9999)
+            {
+                EXPECT_EQ(v, z[i + nx*j]);
+                continue;
+            }
+            // Within the range of the valid data, and of its own valid
+            // neighbours when it has any
+            EXPECT_GE(v, validMin);
+            EXPECT_LE(v, validMax);
+            double lo = 1e300, hi = -1e300;
+            for (label jj = max(j - 1, 0); jj <= min(j + 1, ny - 1); ++jj)
+            {
+                for (label ii = max(i - 1, 0); ii <= min(i + 1, nx - 1); ++ii)
+                {
+                    const double w = z[ii + nx*jj];
+                    if (w != -9999)
+                    {
+                        lo = std::min(lo, w);
+                        hi = std::max(hi, w);
+                    }
+                }
+            }
+            if (lo <= hi)
+            {
+                EXPECT_GE(v, lo) << i << ' ' << j;
+                EXPECT_LE(v, hi) << i << ' ' << j;
+            }
+        }
+    }
+}
+
+
+TEST(terrainRaster, MalformedFilesAreRefusedNamingFileAndKey)
+{
+    const std::string head = "xllcorner 0\nyllcorner 0\ncellsize 1\n";
+    const std::string rows = "1 2\n3 4\n";
+    struct badFile
+    {
+        std::string name, text, expected;
+    };
+    const std::vector<badFile> cases =
+    {
+        {"noNcols.asc", "nrows 2\n" + head + rows, "header key 'ncols'"},
+        {"noCellsize.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\n"
+            + rows, "header key 'cellsize'"},
+        {"noDy.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ndx 1\n"
+            + rows, "header key 'dy'"},
+        {"twoNrows.asc", "ncols 2\nnrows 2\nnrows 2\n" + head + rows,
+            "duplicate header key 'nrows'"},
+        {"cornerCentre.asc", "ncols 2\nnrows 2\n" + head
+            + "xllcenter 0\n" + rows, "'xllcenter': 'xllcorner'"},
+        {"cellsizeDx.asc", "ncols 2\nnrows 2\n" + head + "dx 1\n" + rows,
+            "'dx': 'cellsize'"},
+        {"mixed.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcenter 0\n"
+            "cellsize 1\n" + rows, "'xllcorner' and 'yllcenter'"},
+        {"unknown.asc", "ncols 2\nnrows 2\nfoo 1\n" + head + rows,
+            "unknown header key 'foo'"},
+        {"noValue.asc", "ncols\nnrows 2\n" + head + rows,
+            "'ncols' needs one number"},
+        {"zeroNcols.asc", "ncols 0\nnrows 2\n" + head + rows,
+            "'ncols' = 0 is invalid"},
+        {"negativeNrows.asc", "ncols 2\nnrows -2\n" + head + rows,
+            "'nrows' = -2 is invalid"},
+        {"fractionNcols.asc", "ncols 2.5\nnrows 2\n" + head + rows,
+            "'ncols' = 2.5 is invalid"},
+        {"zeroCellsize.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\n"
+            "cellsize 0\n" + rows, "'cellsize' = 0 is invalid"},
+        {"tooFew.asc", "ncols 2\nnrows 2\n" + head + "1 2\n3\n",
+            "too few values: found 3, expected ncols x nrows"},
+        {"tooMany.asc", "ncols 2\nnrows 2\n" + head + rows + "5\n",
+            "too many values: '5' follows the last of ncols x nrows"},
+        {"word.asc", "ncols 2\nnrows 2\n" + head + "1 2\n3 abc\n",
+            "value 'abc' (row 2, column 2) is not a number; expected ncols"},
+        {"empty.asc", "", "header key 'ncols'"},
+        {"allNoData.asc", "ncols 2\nnrows 2\n" + head
+            + "NODATA_value -1\n-1 -1\n-1 nan\n", "no valid value"},
+        {"text.tif", "not a GeoTIFF\n", "GDAL cannot open the GeoTIFF"},
+        {"grid.xyz", "1 2 3\n", "allowed: .asc"},
+    };
+    for (const badFile& c : cases)
+    {
+        const fileName file = writeText(c.name, c.text);
+        const std::string msg = ioErrorText([&]{ terrainRaster t(file); });
+        EXPECT_NE(msg.find(c.expected), std::string::npos)
+            << c.name << ":\n" << msg;
+        EXPECT_NE(msg.find("file: " + file), std::string::npos)
+            << c.name << ":\n" << msg;
+    }
+
+    // The line of the offending key or value
+    const std::string unknown = ioErrorText
+    (
+        [&]{ terrainRaster t(testDir()/"unknown.asc"); }
+    );
+    EXPECT_NE(unknown.find("at line 3"), std::string::npos) << unknown;
+    const std::string word = ioErrorText
+    (
+        [&]{ terrainRaster t(testDir()/"word.asc"); }
+    );
+    EXPECT_NE(word.find("at line 7"), std::string::npos) << word;
+    EXPECT_NE(unknown.find("cellsize (or dx and dy)"), std::string::npos)
+        << unknown;
+
+    const fileName missing(testDir()/"missing.asc");
+    const std::string msg = ioErrorText([&]{ terrainRaster t(missing); });
+    EXPECT_NE(msg.find("cannot find the raster file"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("file: " + missing), std::string::npos) << msg;
+}
+
+
+TEST(terrainRaster, RealHillsideKotHasNoNoData)
+{
+    const fileName file("/work/shared/data/terrain/hillsideKot600m.asc");
+    if (!isFile(file))
+    {
+        GTEST_SKIP() << file << " not found";
+    }
+    terrainRaster t(file);
+    t.setOffset(t.mapLowerLeft());
+    EXPECT_EQ(t.nx(), 120);
+    EXPECT_EQ(t.ny(), 120);
+    EXPECT_EQ(t.dx(), 4.997688906601);
+    EXPECT_EQ(t.nNoData(), 0);
+    EXPECT_NEAR(t.mapLowerLeft().x(), 177873.022002, 1e-9);
+    EXPECT_NEAR(t.mapLowerLeft().y(), 377487.258603, 1e-9);
+    // README: about 1066 m to 1290 m
+    EXPECT_GT(t.minValue(), 1000);
+    EXPECT_LT(t.maxValue(), 1350);
+    // A north-facing slope: lower in the north
+    EXPECT_LT(t.Z(300, 550), t.Z(300, 150));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,114 @@
+"""dampm post-processing helpers: read OpenFOAM ASCII point fields and mesh
+points, the suite's postProcessing .dat time series, and the analytic
+solutions the tutorials and tests compare against.
+
+Used by the tutorials' plot scripts, tests/cases and benchmarks; put
+$DAMPM_PROJECT_DIR/tools/python on sys.path (etc/bashrc sets
+DAMPM_PROJECT_DIR).
+"""
+import math
+import os
+import re
+
+import numpy as np
+
+
+def _list_after(text, start):
+    """Numbers of the first OpenFOAM list at or after start: 'N ( ... )', or
+    'N{value}' (a uniform list, as OpenFOAM writes it)."""
+    m = re.compile(r"(\d+)\s*([({])").search(text, start)
+    if not m:
+        raise ValueError("no list found")
+    n = int(m.group(1))
+    if m.group(2) == "{":
+        end = text.index("}", m.end())
+        value = np.array(text[m.end():end].replace("(", " ").replace(")", " ").split(), dtype=float)
+        return n, np.tile(value, n)
+    body_start = m.end()
+    depth, i = 1, body_start
+    while depth:
+        c = text[i]
+        depth += (c == "(") - (c == ")")
+        i += 1
+    body = text[body_start:i - 1].replace("(", " ").replace(")", " ")
+    values = np.array(body.split(), dtype=float)
+    return n, values
+
+
+def read_points(case):
+    """Mesh points (N x 3) of constant/polyMesh/points."""
+    with open(os.path.join(case, "constant", "polyMesh", "points")) as f:
+        text = f.read()
+    n, v = _list_after(text, text.index("}"))
+    return v.reshape(n, 3)
+
+
+def read_field(case, time, name, region="", cloud=None):
+    """Internal values of a field (scalar: N, vector: N x 3) written at a
+    time; cloud names a lagrangian cloud. Uniform fields are expanded to
+    None (callers know the size)."""
+    parts = [case, str(time)]
+    if cloud:
+        parts += ["lagrangian", cloud]
+    path = os.path.join(*parts, name)
+    with open(path) as f:
+        text = f.read()
+    body = text[text.index("}") + 1:]
+    key = body.find("internalField")
+    start = key if key >= 0 else 0
+    if key >= 0 and "nonuniform" not in body[key:key + 60]:
+        raise ValueError("%s is uniform" % path)
+    n, v = _list_after(body, start)
+    return v.reshape(n, -1) if v.size != n else v
+
+
+def read_dat(path):
+    """A postProcessing .dat file: dict column name -> numpy array."""
+    header = None
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#"):
+                header = line[1:].split()
+            elif line.strip():
+                rows.append([float(x) for x in line.split()])
+    data = np.array(rows, ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def latest_time(case):
+    """Largest numeric time directory of a case."""
+    times = []
+    for d in os.listdir(case):
+        try:
+            times.append((float(d), d))
+        except ValueError:
+            pass
+    return max(times)[1]
+
+
+def ritter(x, t, h0, x0, g=9.81):
+    """Ritter's dry-bed dam break: height and velocity at x (array), time t,
+    reservoir of depth h0 for x < x0."""
+    c0 = math.sqrt(g * h0)
+    xi = (np.asarray(x, dtype=float) - x0) / t
+    h = np.where(xi <= -c0, h0, (2 * c0 - xi) ** 2 / (9 * g))
+    u = np.where(xi <= -c0, 0.0, 2.0 / 3.0 * (c0 + xi))
+    beyond = xi >= 2 * c0
+    h = np.where(beyond, 0.0, h)
+    u = np.where(beyond, 0.0, u)
+    return h, u
+
+
+def mangeney(x, t, h0, a, gp):
+    """Mangeney et al. (2000) dam break on an incline: material at x < 0,
+    net acceleration a, pressure gravity gp; height and velocity."""
+    c0 = math.sqrt(gp * h0)
+    x = np.asarray(x, dtype=float)
+    xa = -c0 * t + 0.5 * a * t * t
+    xb = 2 * c0 * t + 0.5 * a * t * t
+    h = np.where(x <= xa, h0, (2 * c0 - x / t + 0.5 * a * t) ** 2 / (9 * gp))
+    u = np.where(x <= xa, a * t, 2.0 / 3.0 * (c0 + x / t + a * t))
+    h = np.where(x >= xb, 0.0, h)
+    u = np.where(x >= xb, 0.0, u)
+    return h, u
