@@ -49,6 +49,12 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
 
+    if (startedFromRelease)
+    {
+        #include "writeFields.H"
+        runTime.writeNow();
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())

@@ -29,7 +29,7 @@ Foam::timeSeriesFile::timeSeriesFile
        /runTime.timeName(runTime.startTime().value());
     mkDir(dir);
     os_.reset(new OFstream(dir/(file + ".dat")));
-    os_->precision(10);
+    os_->precision(16);
 
     OFstream& os = *os_;
     os  << "# " << name << ": " << file << nl;
