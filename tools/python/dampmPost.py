@@ -112,3 +112,31 @@ def mangeney(x, t, h0, a, gp):
     h = np.where(x >= xb, 0.0, h)
     u = np.where(x >= xb, 0.0, u)
     return h, u
+
+
+def read_asc(path):
+    """An ESRI ASCII grid: dict with x (ncols), y (nrows, south to north)
+    sample-centre coordinates, z (nrows x ncols, row 0 south; NODATA as NaN)
+    and offset (the lower-left corner)."""
+    header = {}
+    with open(path) as f:
+        while True:
+            pos = f.tell()
+            parts = f.readline().split()
+            if not parts or not parts[0][0].isalpha():
+                f.seek(pos)
+                break
+            header[parts[0].lower()] = float(parts[1])
+        z = np.array(f.read().split(), dtype=float)
+    nx, ny = int(header["ncols"]), int(header["nrows"])
+    d = header.get("cellsize", header.get("dx"))
+    dy = header.get("cellsize", header.get("dy"))
+    if "xllcorner" in header:
+        x0, y0 = header["xllcorner"] + d / 2, header["yllcorner"] + dy / 2
+    else:
+        x0, y0 = header["xllcenter"], header["yllcenter"]
+    z = z.reshape(ny, nx)[::-1]
+    if "nodata_value" in header:
+        z[z == header["nodata_value"]] = np.nan
+    return {"x": x0 + d * np.arange(nx), "y": y0 + dy * np.arange(ny), "z": z,
+            "offset": (x0 - d / 2, y0 - dy / 2)}
