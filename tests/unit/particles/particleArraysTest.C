@@ -125,6 +125,33 @@ TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
 }
 
 
+TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
+{
+    const gridGeometry g = grid2D();
+    particleArrays p = randomParticles(g, 2000);
+    EXPECT_TRUE(p.sortByCell(g, 1));
+    const std::vector<label> cellStart = p.cellStart();
+
+    // Every particle moves by less than one cell: the binning is kept
+    double* x = p.column(particleArrays::X);
+    for (label i = 0; i < p.size(); ++i)
+    {
+        x[i] = std::min(std::max(x[i] + 0.9*g.dx[0]*((i % 3) - 1), 0.0),
+            g.upper(0));
+    }
+    EXPECT_FALSE(p.sortByCell(g, 1));
+    EXPECT_TRUE(p.cellStart() == cellStart);
+
+    // One particle two cells away: re-binned, and sorted again
+    x[7] = x[7] > g.upper(0)/2 ? x[7] - 2.5*g.dx[0] : x[7] + 2.5*g.dx[0];
+    EXPECT_TRUE(p.sortByCell(g, 1));
+    for (label i = 1; i < p.size(); ++i)
+    {
+        EXPECT_LE(p.cell()[i - 1], p.cell()[i]);
+    }
+}
+
+
 TEST(particleArrays, RemoveFlaggedKeepsOrderOfTheRest)
 {
     const gridGeometry g = grid2D();

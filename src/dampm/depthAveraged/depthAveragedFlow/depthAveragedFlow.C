@@ -412,7 +412,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
         return;
     }
     const gridGeometry& g = grid_.geometry();
-    particles_.sortByCell(g);
+    particles_.sortByCell(g, schedule_.maxStale());
 
     double* mom[2] = {nodes_.px.data(), nodes_.py.data()};
     const shallowColumns cols = columns();

@@ -16,7 +16,8 @@ License
 
 Foam::particleArrays::particleArrays()
 :
-    size_(0)
+    size_(0),
+    binned_(false)
 {
     addField("positions", fieldKind::vector);
     addField("U", fieldKind::vector);
@@ -123,6 +124,7 @@ Foam::label Foam::particleArrays::append(const label n)
         }
     }
     cell_.resize(size_, 0);
+    binned_ = false;
     return first;
 }
 
@@ -161,6 +163,11 @@ Foam::label Foam::particleArrays::removeFlagged
         }
         cell_.resize(n);
         size_ = n;
+        // Compaction keeps the order: the binning stays, recounted
+        if (binned_)
+        {
+            countCells(label(cellStart_.size()) - 1);
+        }
     }
     return nRemoved;
 }
@@ -174,6 +181,7 @@ void Foam::particleArrays::clear()
     }
     cell_.clear();
     size_ = 0;
+    binned_ = false;
 }
 
 
@@ -196,7 +204,25 @@ void Foam::particleArrays::permute()
 }
 
 
-void Foam::particleArrays::sortByCell(const gridGeometry& g)
+void Foam::particleArrays::countCells(const label nCells)
+{
+    cellStart_.assign(nCells + 1, 0);
+    for (label i = 0; i < size_; ++i)
+    {
+        ++cellStart_[cell_[i] + 1];
+    }
+    for (label c = 0; c < nCells; ++c)
+    {
+        cellStart_[c + 1] += cellStart_[c];
+    }
+}
+
+
+bool Foam::particleArrays::sortByCell
+(
+    const gridGeometry& g,
+    const label maxStale
+)
 {
     const label nCells = g.nCellsTotal();
     const double* x = column(X);
@@ -205,8 +231,35 @@ void Foam::particleArrays::sortByCell(const gridGeometry& g)
 
     cell_.resize(size_);
     label* cellp = cell_.data();
-    bool sorted = true;
 
+    // Keep the binning while every particle is near its bin
+    if
+    (
+        maxStale > 0 && binned_ && label(cellStart_.size()) == nCells + 1
+    )
+    {
+        const label nx = g.nCells[0];
+        const label nxy = g.nCells[0]*g.nCells[1];
+        bool near = true;
+        #pragma omp parallel for schedule(static) reduction(&&:near)
+        for (label i = 0; i < size_; ++i)
+        {
+            const label c = cellp[i];
+            const label di = g.cellDir(0, x[i]) - c % nx;
+            const label dj = g.cellDir(1, y[i]) - (c % nxy)/nx;
+            const label dk = g.dim == 3 ? g.cellDir(2, z[i]) - c/nxy : 0;
+            near = near
+                && di <= maxStale && -di <= maxStale
+                && dj <= maxStale && -dj <= maxStale
+                && dk <= maxStale && -dk <= maxStale;
+        }
+        if (near)
+        {
+            return false;
+        }
+    }
+
+    bool sorted = true;
     #pragma omp parallel for schedule(static) reduction(&&:sorted)
     for (label i = 0; i < size_; ++i)
     {
@@ -215,19 +268,12 @@ void Foam::particleArrays::sortByCell(const gridGeometry& g)
     }
 
     // Counting sort: cellStart is the exclusive prefix sum of the counts
-    cellStart_.assign(nCells + 1, 0);
-    for (label i = 0; i < size_; ++i)
-    {
-        ++cellStart_[cellp[i] + 1];
-    }
-    for (label c = 0; c < nCells; ++c)
-    {
-        cellStart_[c + 1] += cellStart_[c];
-    }
+    countCells(nCells);
+    binned_ = true;
 
     if (sorted)
     {
-        return;
+        return true;
     }
 
     count_.assign(cellStart_.begin(), cellStart_.end() - 1);
@@ -248,6 +294,7 @@ void Foam::particleArrays::sortByCell(const gridGeometry& g)
     {
         cellp[k] = g.cellOf(xs[k], ys[k], zs[k]);
     }
+    return true;
 }
 
 
