@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bedFrictionModel.H"
+#include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -19,22 +20,10 @@ Foam::autoPtr<Foam::bedFrictionModel> Foam::bedFrictionModel::New
 {
     const word modelType(dict.get<word>("bedFriction"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "bedFriction",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
     return autoPtr<bedFrictionModel>
     (
-        cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
+        modelConstructor<bedFrictionModel>(dict, "bedFriction", modelType)
+        (dict.optionalSubDict(modelType + "Coeffs"))
     );
 }
 

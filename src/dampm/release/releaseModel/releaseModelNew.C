@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "releaseModel.H"
+#include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -21,20 +22,11 @@ Foam::autoPtr<Foam::releaseModel> Foam::releaseModel::New
 {
     const word modelType(dict.get<word>("type"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "release type",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<releaseModel>(cstrIter()(dict, topography, caseDir));
+    return autoPtr<releaseModel>
+    (
+        modelConstructor<releaseModel>(dict, "release type", modelType)
+        (dict, topography, caseDir)
+    );
 }
 
 

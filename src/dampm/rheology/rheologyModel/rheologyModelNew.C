@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rheologyModel.H"
+#include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -19,22 +20,10 @@ Foam::autoPtr<Foam::rheologyModel> Foam::rheologyModel::New
 {
     const word modelType(dict.get<word>("rheology"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "rheology",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
     return autoPtr<rheologyModel>
     (
-        cstrIter()(dict.optionalSubDict(modelType + "Coeffs"))
+        modelConstructor<rheologyModel>(dict, "rheology", modelType)
+        (dict.optionalSubDict(modelType + "Coeffs"))
     );
 }
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "shapeFunction.H"
+#include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -20,22 +21,10 @@ Foam::autoPtr<Foam::shapeFunction> Foam::shapeFunction::New
 {
     const word modelType(dict.get<word>("shapeFunction"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "shapeFunction",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
     return autoPtr<shapeFunction>
     (
-        cstrIter()(dict.optionalSubDict(modelType + "Coeffs"), particleHalfWidth)
+        modelConstructor<shapeFunction>(dict, "shapeFunction", modelType)
+        (dict.optionalSubDict(modelType + "Coeffs"), particleHalfWidth)
     );
 }
 

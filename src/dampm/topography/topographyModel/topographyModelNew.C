@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "topographyModel.H"
+#include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -20,22 +21,10 @@ Foam::autoPtr<Foam::topographyModel> Foam::topographyModel::New
 {
     const word modelType(dict.get<word>("topography"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "topography",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
     return autoPtr<topographyModel>
     (
-        cstrIter()(dict.optionalSubDict(modelType + "Coeffs"), caseDir)
+        modelConstructor<topographyModel>(dict, "topography", modelType)
+        (dict.optionalSubDict(modelType + "Coeffs"), caseDir)
     );
 }
 
