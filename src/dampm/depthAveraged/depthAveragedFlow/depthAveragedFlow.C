@@ -204,7 +204,149 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
         particles_.column(particleArrays::M)[i] = rho_*h[k]*cellArea;
         particles_.column(h_)[i] = h[k];
         particles_.column(A_)[i] = cellArea;
+        particles_.column(F_)[i] = g.dx[0]/n;
+        particles_.column(F_ + 3)[i] = g.dx[1]/n;
     }
+}
+
+
+Foam::scalar Foam::depthAveragedFlow::seedArea() const
+{
+    const gridGeometry& g = grid_.geometry();
+    return g.dx[0]*g.dx[1]/(nPerCell_*nPerCell_);
+}
+
+
+Foam::label Foam::depthAveragedFlow::splitColumns()
+{
+    if (!(splitRatio_ > 0))
+    {
+        return 0;
+    }
+    const gridGeometry& g = grid_.geometry();
+    const double cell[2] = {g.dx[0], g.dx[1]};
+    const double maxArea = splitRatio_*seedArea();
+    const double hMin = hMin_;
+    const label n = particles_.size();
+
+    // Columns to split: footprint above maxArea, not thinner than hMin
+    // (dry for output), both halves inside the domain. Marked in parallel,
+    // listed in storage order: the same children on any number of threads.
+    {
+        const double* F[4] =
+        {
+            particles_.column(F_), particles_.column(F_ + 1),
+            particles_.column(F_ + 2), particles_.column(F_ + 3)
+        };
+        const double* x = particles_.column(particleArrays::X);
+        const double* y = particles_.column(particleArrays::Y);
+        const double* V = particles_.column(particleArrays::VOL);
+        flagged_.assign(n, 0);
+
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i)
+        {
+            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+            const double area = std::abs(Fi[0]*Fi[3] - Fi[1]*Fi[2]);
+            if (area > maxArea && V[i] >= hMin*area)
+            {
+                double d[2], Fc[4];
+                splitFootprint(Fi, cell, d, Fc);
+                const double pos[2] = {x[i], y[i]};
+                bool inside = true;
+                for (int k = 0; k < 2; ++k)
+                {
+                    inside = inside
+                        && pos[k] - std::abs(d[k]) > g.origin[k]
+                        && pos[k] + std::abs(d[k]) < g.upper(k);
+                }
+                flagged_[i] = inside;
+            }
+        }
+    }
+    splitList_.clear();
+    for (label i = 0; i < n; ++i)
+    {
+        if (flagged_[i])
+        {
+            splitList_.push_back(i);
+        }
+    }
+    const label nSplit = label(splitList_.size());
+    if (!nSplit)
+    {
+        return 0;
+    }
+
+    // A child starts as a copy of its parent, every field included (the
+    // append may move the arrays: pointers are taken after it)
+    const label first = particles_.append(nSplit);
+    const label* parent = splitList_.data();
+    for (label c = 0; c < particles_.nColumns(); ++c)
+    {
+        double* col = particles_.column(c);
+        #pragma omp parallel for schedule(static)
+        for (label k = 0; k < nSplit; ++k)
+        {
+            col[first + k] = col[parent[k]];
+        }
+    }
+
+    double* F[4] =
+    {
+        particles_.column(F_), particles_.column(F_ + 1),
+        particles_.column(F_ + 2), particles_.column(F_ + 3)
+    };
+    const double* C[4] =
+    {
+        particles_.column(gradU_), particles_.column(gradU_ + 1),
+        particles_.column(gradU_ + 2), particles_.column(gradU_ + 3)
+    };
+    double* x = particles_.column(particleArrays::X);
+    double* y = particles_.column(particleArrays::Y);
+    double* ux = particles_.column(particleArrays::UX);
+    double* uy = particles_.column(particleArrays::UY);
+    double* m = particles_.column(particleArrays::M);
+    double* V = particles_.column(particleArrays::VOL);
+    double* A = particles_.column(A_);
+
+    // The halves: mass, volume and basal area halved (exactly: mass is
+    // conserved to round-off), positions at the centroids of the two halves
+    // of the footprint and velocities from the column's affine field there
+    // (centre of mass and momentum kept)
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < nSplit; ++k)
+    {
+        const label i = parent[k];
+        const label j = first + k;
+        const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+        double d[2], Fc[4];
+        splitFootprint(Fi, cell, d, Fc);
+        const double du[2] =
+        {
+            C[0][i]*d[0] + C[1][i]*d[1],
+            C[2][i]*d[0] + C[3][i]*d[1]
+        };
+        x[j] = x[i] + d[0];
+        y[j] = y[i] + d[1];
+        x[i] -= d[0];
+        y[i] -= d[1];
+        ux[j] = ux[i] + du[0];
+        uy[j] = uy[i] + du[1];
+        ux[i] -= du[0];
+        uy[i] -= du[1];
+        m[i] *= 0.5;
+        m[j] = m[i];
+        V[i] *= 0.5;
+        V[j] = V[i];
+        A[i] *= 0.5;
+        A[j] = A[i];
+        for (int c = 0; c < 4; ++c)
+        {
+            F[c][i] = F[c][j] = Fc[c];
+        }
+    }
+    return nSplit;
 }
 
 
@@ -222,6 +364,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     g_(g),
     nPerCell_(dict.getOrDefault<label>("particlesPerCell", 2)),
     hMin_(dict.getOrDefault<scalar>("hMin", 1e-4)),
+    splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
     pressureForm_
     (
@@ -256,6 +399,12 @@ Foam::depthAveragedFlow::depthAveragedFlow
             << "hMin = " << hMin_ << " is invalid; allowed: hMin >= 0 [m]"
             << exit(FatalIOError);
     }
+    if (!(splitRatio_ == 0 || splitRatio_ >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "splitRatio = " << splitRatio_ << " is invalid; allowed: 0"
+            << " (no splitting) or >= 1 (seed areas)" << exit(FatalIOError);
+    }
 
     dictionary shapeDict(dict);
     if (!shapeDict.found("shapeFunction"))
@@ -279,6 +428,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     typedef particleArrays::fieldKind kind;
     h_ = particles_.addField("h", kind::scalar);
     A_ = particles_.addField("A", kind::scalar);
+    F_ = particles_.addField("F", kind::tensor2D);
     gradU_ = particles_.addField("gradU", kind::tensor2D);
     sigma_ = particles_.addField("sigma", kind::internal, 0, 3);
     gradZeta_ = particles_.addField("gradZeta", kind::internal, 0, 2);
@@ -340,6 +490,19 @@ Foam::depthAveragedFlow::depthAveragedFlow
                 << " are missing at time " << runTime.timeName()
                 << ": started from their initial values" << endl;
         }
+        if (missing.found("F"))
+        {
+            // Footprints of an older cloud: square in cell units, of the
+            // basal area A (or a seed column's)
+            const gridGeometry& g = grid.geometry();
+            const double* A = particles_.column(A_);
+            for (label i = 0; i < particles_.size(); ++i)
+            {
+                const scalar a = A[i] > 0 ? A[i] : seedArea();
+                particles_.column(F_)[i] = std::sqrt(a*g.dx[0]/g.dx[1]);
+                particles_.column(F_ + 3)[i] = std::sqrt(a*g.dx[1]/g.dx[0]);
+            }
+        }
     }
     else
     {
@@ -367,6 +530,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     }
     massTol_ = 1e-12*mMax;
     flagged_.reserve(particles_.size());
+    splitList_.reserve(particles_.size());
 }
 
 
@@ -383,7 +547,17 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     shape_->describe(os);
     os  << nl << "    pressure force  " << pressureFormNames[pressureForm_]
         << " form, slope correction " << (slopeCorrection_ ? "on" : "off")
-        << ", hMin = " << hMin_ << " m" << nl << "    topography      ";
+        << ", hMin = " << hMin_ << " m" << nl << "    column split    ";
+    if (splitRatio_ > 0)
+    {
+        os  << "above " << splitRatio_ << " seed areas ("
+            << splitRatio_*seedArea() << " m^2)";
+    }
+    else
+    {
+        os  << "off";
+    }
+    os  << nl << "    topography      ";
     topography_->describe(os);
     os  << nl << "    bed friction    ";
     friction_->describe(os);
@@ -424,7 +598,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
             particlesToGridMomentum<2>
             (
                 g, schedule_, kernel, particles_, gradU_,
-                nodes_.mass.data(), mom, A_, nodes_.cover.data()
+                nodes_.mass.data(), mom
             );
         }
     );
@@ -574,10 +748,14 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         }
     );
 
-    // Positions, kinematic basal areas, walls and open sides
+    // Positions, footprints, walls and open sides
     const label n = particles_.size();
-    double* A = particles_.column(A_);
-    const double* C[4] =
+    double* F[4] =
+    {
+        particles_.column(F_), particles_.column(F_ + 1),
+        particles_.column(F_ + 2), particles_.column(F_ + 3)
+    };
+    double* C[4] =
     {
         particles_.column(gradU_), particles_.column(gradU_ + 1),
         particles_.column(gradU_ + 2), particles_.column(gradU_ + 3)
@@ -589,20 +767,20 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     const double* m = particles_.column(particleArrays::M);
     flagged_.assign(n, 0);
     const domainSides sides = sides_;
-    double removed = 0;
     label nRemoved = 0;
 
-    #pragma omp parallel for schedule(static) reduction(+:removed, nRemoved)
+    #pragma omp parallel for schedule(static) reduction(+:nRemoved)
     for (label i = 0; i < n; ++i)
     {
         double* pos[2] = {&x[i], &y[i]};
         double* vel[2] = {&ux[i], &uy[i]};
         *pos[0] += dt*ux[i];
         *pos[1] += dt*uy[i];
-        // The footprint follows the flow: A <- A det(I + dt C)
-        const double J =
-            (1 + dt*C[0][i])*(1 + dt*C[3][i]) - dt*dt*C[1][i]*C[2][i];
-        A[i] *= J > 0.1 ? J : 0.1;
+        advanceColumn
+        (
+            dt, C[0][i], C[1][i], C[2][i], C[3][i],
+            F[0][i], F[1][i], F[2][i], F[3][i]
+        );
         for (int d = 0; d < 2 && !flagged_[i]; ++d)
         {
             const double eps = 1e-6*g.dx[d];
@@ -619,17 +797,23 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
                 else
                 {
                     flagged_[i] = 1;
-                    removed += m[i];
                     ++nRemoved;
                 }
             }
         }
     }
+    // The outflow tallied in storage order: the same on any number of threads
+    double removed = 0;
     if (nRemoved)
     {
+        for (label i = 0; i < n; ++i)
+        {
+            removed += flagged_[i] ? m[i] : 0;
+        }
         particles_.removeFlagged(flagged_);
         outflowMass_ += removed;
     }
+    splitColumns();
     prepared_ = false;
     return removed;
 }
@@ -681,21 +865,42 @@ void Foam::depthAveragedFlow::diagnostics
     const double* gx = particles_.column(gradZ_);
     const double* gy = particles_.column(gradZ_ + 1);
 
-    double M = 0, KE = 0, vMax = 0;
+    // Sums over fixed blocks of particles, added in block order: the same
+    // rounding on any number of threads (min and max are exact anyway)
+    const label blockSize = 1024;
+    const label nBlocks = (n + blockSize - 1)/blockSize;
+    blockSums_.resize(2*nBlocks);
+    double* sums = blockSums_.data();
+    double vMax = 0;
     double xMin = GREAT, xMax = -GREAT, yMin = GREAT, yMax = -GREAT;
-    #pragma omp parallel for schedule(static)         reduction(+:M, KE) reduction(max:vMax, xMax, yMax)         reduction(min:xMin, yMin)
-    for (label i = 0; i < n; ++i)
+    #pragma omp parallel for schedule(static) \
+        reduction(max:vMax, xMax, yMax) reduction(min:xMin, yMin)
+    for (label b = 0; b < nBlocks; ++b)
     {
-        // Speed along the bed: the vertical component follows the terrain
-        const double w = ux[i]*gx[i] + uy[i]*gy[i];
-        const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
-        M += m[i];
-        KE += 0.5*m[i]*v2;
-        vMax = v2 > vMax ? v2 : vMax;
-        xMin = x[i] < xMin ? x[i] : xMin;
-        xMax = x[i] > xMax ? x[i] : xMax;
-        yMin = y[i] < yMin ? y[i] : yMin;
-        yMax = y[i] > yMax ? y[i] : yMax;
+        double M = 0, KE = 0;
+        const label last = min((b + 1)*blockSize, n);
+        for (label i = b*blockSize; i < last; ++i)
+        {
+            // Speed along the bed: the vertical component follows the
+            // terrain
+            const double w = ux[i]*gx[i] + uy[i]*gy[i];
+            const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
+            M += m[i];
+            KE += 0.5*m[i]*v2;
+            vMax = v2 > vMax ? v2 : vMax;
+            xMin = x[i] < xMin ? x[i] : xMin;
+            xMax = x[i] > xMax ? x[i] : xMax;
+            yMin = y[i] < yMin ? y[i] : yMin;
+            yMax = y[i] > yMax ? y[i] : yMax;
+        }
+        sums[2*b] = M;
+        sums[2*b + 1] = KE;
+    }
+    double M = 0, KE = 0;
+    for (label b = 0; b < nBlocks; ++b)
+    {
+        M += sums[2*b];
+        KE += sums[2*b + 1];
     }
     mass = M;
     kineticEnergy = KE;
