@@ -415,9 +415,21 @@ Foam::depthAveragedFlow::depthAveragedFlow
 
     const fileName caseDir = grid.mesh().time().path();
     dictionary withDefaults(dict);
-    withDefaults.add("topography", word("flat"), false);
-    withDefaults.add("bedFriction", word("none"), false);
-    withDefaults.add("rheology", word("inviscid"), false);
+    for
+    (
+        const auto& key :
+        {
+            std::pair<word, word>("topography", "flat"),
+            std::pair<word, word>("bedFriction", "none"),
+            std::pair<word, word>("rheology", "inviscid")
+        }
+    )
+    {
+        if (!withDefaults.found(key.first))
+        {
+            withDefaults.add(key.first, key.second);
+        }
+    }
     topography_ = topographyModel::New(withDefaults, caseDir);
     friction_ = bedFrictionModel::New(withDefaults);
     rheology_ = rheologyModel::New(withDefaults);
