@@ -76,7 +76,8 @@ void Foam::hazardMaps::writeRaster
         terrain ? terrain->projection() : string::null
     );
     raster.writeAsc(dir/(name + ".asc"));
-    if (raster.hasProjection())
+    const word ext(terrain ? terrain->file().ext() : word());
+    if (raster.hasProjection() || ext == "tif" || ext == "tiff")
     {
         raster.writeGeoTiff(dir/(name + ".tif"));
     }

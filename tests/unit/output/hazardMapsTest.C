@@ -1,0 +1,124 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    Hazard maps: the maxima over time at the grid nodes, exported in the
+    terrain's map coordinates as ESRI ASCII and, for a GeoTIFF terrain, as a
+    GeoTIFF that reads back with the same values and georeference.
+
+\*---------------------------------------------------------------------------*/
+
+#include "hazardMaps.H"
+#include "topographyModel.H"
+#include "terrainRaster.H"
+#include "testCase.H"
+#include "OSspecific.H"
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+// Values written as float32 GeoTIFF and full-precision ASCII
+constexpr double tiffTol = 1e-6;   // relative, float32
+constexpr double ascTol = 1e-12;
+
+} // End anonymous namespace
+
+
+TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
+{
+    const fileName dir = fileName(DAMPM_TEST_MESHES).path()/"hazardMapsCase";
+    rmDir(dir);
+    mkDir(dir/"constant");
+    cp(testCase::meshDir("box2D")/"system", dir);
+    cp(testCase::meshDir("box2D")/"constant"/"polyMesh", dir/"constant");
+    testCase tc(dir);
+    tc.runTime().setTime(2.5, 1);
+    const mpmGrid grid(tc.mesh());
+    const gridGeometry& g = grid.geometry();
+
+    // A planar terrain in map coordinates, written as a GeoTIFF: samples
+    // every 0.25 m from (1000.125, 5000.125), i.e. lower-left corner
+    // (1000, 5000), covering the 10 m x 5 m grid
+    const label nx = 41, ny = 21;
+    scalarList Z(nx*ny);
+    for (label j = 0; j < ny; ++j)
+    {
+        for (label i = 0; i < nx; ++i)
+        {
+            Z[i + nx*j] = 100 + 0.5*(0.125 + 0.25*i) - 0.2*(0.125 + 0.25*j);
+        }
+    }
+    const terrainRaster source
+    (
+        vector2D(1000.125, 5000.125), 0.25, 0.25, nx, ny, Z, vector2D::zero
+    );
+    source.writeGeoTiff(dir/"constant"/"terrain.tif");
+
+    dictionary dict;
+    dict.add("topography", word("raster"));
+    dictionary coeffs;
+    coeffs.add("file", fileName("constant/terrain.tif"));
+    dict.add("rasterCoeffs", coeffs);
+    autoPtr<topographyModel> topo = topographyModel::New(dict, dir);
+    EXPECT_NEAR(topo->mapOffset().x(), 1000, 1e-9);
+    EXPECT_NEAR(topo->mapOffset().y(), 5000, 1e-9);
+
+    std::vector<double> Znodes(g.nNodes());
+    topo->sampleNodes(g, Znodes.data());
+    hazardMaps maps(grid, *topo, Znodes.data());
+
+    // Two steps of a made-up node state: the maps keep the maxima
+    shallowGrid nodes;
+    nodes.resize(g.nNodes());
+    for (int step = 0; step < 2; ++step)
+    {
+        for (label n = 0; n < g.nNodes(); ++n)
+        {
+            nodes.h[n] = step == 0 ? 0.01*n : 0.005*n;
+            nodes.vx[n] = step == 0 ? 1.0 : 2.0;
+            nodes.vy[n] = 0;
+        }
+        maps.update(nodes);
+    }
+    maps.write();
+
+    const fileName out = dir/"postProcessing"/"hazardMaps"/"2.5";
+    ASSERT_TRUE(isFile(out/"maxHeight.asc"));
+    ASSERT_TRUE(isFile(out/"maxHeight.tif")) << "no GeoTIFF for a GeoTIFF terrain";
+
+    for (const word ext : {"asc", "tif"})
+    {
+        terrainRaster maxH(out/("maxHeight." + ext));
+        maxH.setOffset(vector2D(1000, 5000));
+        ASSERT_EQ(maxH.nx(), g.nCells[0] + 1);
+        ASSERT_EQ(maxH.ny(), g.nCells[1] + 1);
+        const double tol = ext == "tif" ? tiffTol : ascTol;
+        for (label j = 0; j <= g.nCells[1]; ++j)
+        {
+            for (label i = 0; i <= g.nCells[0]; ++i)
+            {
+                // Node (i, j) at local (i dx, j dy) = map (1000 + ..)
+                EXPECT_NEAR(maxH.x(i), g.nodeCoord(0, i), 1e-9);
+                EXPECT_NEAR(maxH.y(j), g.nodeCoord(1, j), 1e-9);
+                const double expected = 0.01*g.nodeIndex(i, j, 0);
+                EXPECT_NEAR(maxH.value(i, j), expected, tol*(1 + expected));
+            }
+        }
+    }
+
+    // Speed along the bed: |v| sqrt(1 + (dZ/dx)^2) with dZ/dx = 0.5
+    terrainRaster maxU(out/"maxSpeed.asc");
+    const label interior = g.nCells[0]/2 + (g.nCells[0] + 1)*(g.nCells[1]/2);
+    EXPECT_NEAR(maxU.values()[interior], 2*std::sqrt(1.25), 1e-9);
+}
+
+
+// ************************************************************************* //
