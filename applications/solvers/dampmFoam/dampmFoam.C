@@ -69,7 +69,7 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::grid, [&]
         {
             flow.updateGrid(dt);
-            hazard.update(flow.nodes());
+            hazard.update(flow.nodes(), flow.activeNodes());
         });
         timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
         timers.countStep(flow.particles().size());

@@ -86,7 +86,7 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
             nodes.vx[n] = step == 0 ? 1.0 : 2.0;
             nodes.vy[n] = 0;
         }
-        maps.update(nodes);
+        maps.update(nodes, g.allNodes());
     }
     maps.write();
 

@@ -600,6 +600,25 @@ void Foam::depthAveragedFlow::particlesToGrid()
     const gridGeometry& g = grid_.geometry();
     particles_.sortByCell(g, schedule_.maxStale());
 
+    // Work on the nodes the columns touch, and clear those of last step
+    const label n = particles_.size();
+    const double* x = particles_.column(particleArrays::X);
+    const double* y = particles_.column(particleArrays::Y);
+    double lo[3] = {GREAT, GREAT, 0}, hi[3] = {-GREAT, -GREAT, 0};
+    #pragma omp parallel for schedule(static) \
+        reduction(min:lo[:2]) reduction(max:hi[:2])
+    for (label i = 0; i < n; ++i)
+    {
+        lo[0] = x[i] < lo[0] ? x[i] : lo[0];
+        hi[0] = x[i] > hi[0] ? x[i] : hi[0];
+        lo[1] = y[i] < lo[1] ? y[i] : lo[1];
+        hi[1] = y[i] > hi[1] ? y[i] : hi[1];
+    }
+    activeNodes_ = stencilNodes_;
+    stencilNodes_ = n ? g.stencilBox(lo, hi) : nodeBox();
+    activeNodes_.unite(stencilNodes_);
+    zeroNodes(g, activeNodes_, nodes_);
+
     double* mom[2] = {nodes_.px.data(), nodes_.py.data()};
     const shallowColumns cols = columns();
     visitShape
@@ -610,11 +629,15 @@ void Foam::depthAveragedFlow::particlesToGrid()
             particlesToGridMomentum<2>
             (
                 g, schedule_, kernel, particles_, gradU_,
-                nodes_.mass.data(), mom
+                nodes_.mass.data(), mom, -1, nullptr, false
             );
         }
     );
-    nodeHeights(nodes_, rho_, massTol_, slopeCorrection_, kappaNode_.data());
+    nodeHeights
+    (
+        g, activeNodes_, nodes_, rho_, massTol_, slopeCorrection_,
+        kappaNode_.data()
+    );
     visitShape
     (
         *shape_,
@@ -706,7 +729,8 @@ void Foam::depthAveragedFlow::computeForces()
             {
                 scatterForces<K, gf(), st(), ba()>
                 (
-                    g, schedule_, cellStart, kernel, nodes_, cols, rho_, g_
+                    g, stencilNodes_, schedule_, cellStart, kernel, nodes_,
+                    cols, rho_, g_
                 );
             };
             typedef std::true_type T;
@@ -742,7 +766,8 @@ void Foam::depthAveragedFlow::updateGrid(const scalar dt)
 {
     resistanceUpdate
     (
-        grid_.geometry(), nodes_, sides_, dt, massTol_, basalActive()
+        grid_.geometry(), activeNodes_, nodes_, sides_, dt, massTol_,
+        basalActive()
     );
 }
 

@@ -145,20 +145,29 @@ Foam::hazardMaps::hazardMaps
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::hazardMaps::update(const shallowGrid& nodes)
+void Foam::hazardMaps::update
+(
+    const shallowGrid& nodes,
+    const nodeBox& active
+)
 {
-    const label n = label(maxHeight_.size());
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        const double h = nodes.h[i];
-        const double w = Gx_[i]*nodes.vx[i] + Gy_[i]*nodes.vy[i];
-        const double v2 = nodes.vx[i]*nodes.vx[i] + nodes.vy[i]*nodes.vy[i]
-          + w*w;
-        maxHeight_[i] = max(maxHeight_[i], h);
-        maxSpeed_[i] = max(maxSpeed_[i], std::sqrt(v2));
-        maxIntensity_[i] = max(maxIntensity_[i], h*v2);
-    }
+    grid_.geometry().forEachNodeRow
+    (
+        active,
+        [&](const label first, const label last)
+        {
+            for (label i = first; i < last; ++i)
+            {
+                const double h = nodes.h[i];
+                const double w = Gx_[i]*nodes.vx[i] + Gy_[i]*nodes.vy[i];
+                const double v2 = nodes.vx[i]*nodes.vx[i]
+                  + nodes.vy[i]*nodes.vy[i] + w*w;
+                maxHeight_[i] = max(maxHeight_[i], h);
+                maxSpeed_[i] = max(maxSpeed_[i], std::sqrt(v2));
+                maxIntensity_[i] = max(maxIntensity_[i], h*v2);
+            }
+        }
+    );
 }
 
 
