@@ -369,7 +369,7 @@ TEST(scalarExpression, OpenMPAndSerialLoopsAgreeBitForBit)
 }
 
 
-TEST(scalarExpression, HemisphereEvaluationSpeedIsReported)
+TEST(scalarExpressionBenchmark, HemisphereEvaluationSpeedIsReported)
 {
     const scalarExpression h(hemisphere, {"x", "y"}, "hemisphere");
     const label n = 10000000;

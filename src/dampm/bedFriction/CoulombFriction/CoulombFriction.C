@@ -34,7 +34,14 @@ Foam::bedFrictionModels::CoulombFriction::CoulombFriction
     bedFrictionModel(coeffs),
     tanPhi_(tan(readFrictionAngle()*constant::mathematical::pi/180)),
     pA_(coeffs.getOrDefault<scalar>("pA", 0))
-{}
+{
+    if (!(pA_ >= 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "pA = " << pA_ << " is invalid; allowed: pA >= 0 [Pa]"
+            << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -464,24 +464,11 @@ Foam::depthAveragedFlow::depthAveragedFlow
     kappaNode_.assign(geom.nNodes(), 1.0);
     if (slopeCorrection_ && !topography_->isFlat())
     {
-        // Central differences of the sampled terrain (one-sided at the
-        // outer ghost layer)
-        const label sx = geom.nodeStride[1];
-        for (label j = 0; j < geom.nNodesDir[1]; ++j)
+        std::vector<double> gx(geom.nNodes()), gy(geom.nNodes());
+        nodeTerrainGradient(geom, nodes_.Z.data(), gx.data(), gy.data());
+        for (label n = 0; n < geom.nNodes(); ++n)
         {
-            for (label i = 0; i < geom.nNodesDir[0]; ++i)
-            {
-                const label n = i + j*sx;
-                const label iL = max(i - 1, label(0));
-                const label iR = min(i + 1, geom.nNodesDir[0] - 1);
-                const label jL = max(j - 1, label(0));
-                const label jR = min(j + 1, geom.nNodesDir[1] - 1);
-                const scalar gx = (nodes_.Z[iR + j*sx] - nodes_.Z[iL + j*sx])
-                    /((iR - iL)*geom.dx[0]);
-                const scalar gy = (nodes_.Z[i + jR*sx] - nodes_.Z[i + jL*sx])
-                    /((jR - jL)*geom.dx[1]);
-                kappaNode_[n] = 1/(1 + gx*gx + gy*gy);
-            }
+            kappaNode_[n] = 1/(1 + gx[n]*gx[n] + gy[n]*gy[n]);
         }
     }
 
@@ -591,6 +578,20 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
 }
 
 
+void Foam::depthAveragedFlow::writeState(dictionary& state) const
+{
+    state.set("outflowMass", outflowMass_);
+    state.set("massTolerance", massTol_);
+}
+
+
+void Foam::depthAveragedFlow::readState(const dictionary& state)
+{
+    outflowMass_ = state.get<scalar>("outflowMass");
+    massTol_ = state.getOrDefault<scalar>("massTolerance", massTol_);
+}
+
+
 void Foam::depthAveragedFlow::particlesToGrid()
 {
     if (prepared_)
@@ -629,7 +630,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
             particlesToGridMomentum<2>
             (
                 g, schedule_, kernel, particles_, gradU_,
-                nodes_.mass.data(), mom, -1, nullptr, false
+                nodes_.mass.data(), mom, false
             );
         }
     );

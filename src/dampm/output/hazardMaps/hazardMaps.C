@@ -100,16 +100,7 @@ Foam::hazardMaps::hazardMaps
     const label n = g.nNodes();
     Gx_.assign(n, 0.0);
     Gy_.assign(n, 0.0);
-    const label sy = g.nodeStride[1];
-    for (label j = 1; j < g.nNodesDir[1] - 1; ++j)
-    {
-        for (label i = 1; i < g.nNodesDir[0] - 1; ++i)
-        {
-            const label k = i + j*sy;
-            Gx_[k] = (Znodes[k + 1] - Znodes[k - 1])/(2*g.dx[0]);
-            Gy_[k] = (Znodes[k + sy] - Znodes[k - sy])/(2*g.dx[1]);
-        }
-    }
+    nodeTerrainGradient(g, Znodes, Gx_.data(), Gy_.data());
     maxHeight_.assign(n, 0.0);
     maxSpeed_.assign(n, 0.0);
     maxIntensity_.assign(n, 0.0);
