@@ -92,7 +92,8 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
 
     const fileName out = dir/"postProcessing"/"hazardMaps"/"2.5";
     ASSERT_TRUE(isFile(out/"maxHeight.asc"));
-    ASSERT_TRUE(isFile(out/"maxHeight.tif")) << "no GeoTIFF for a GeoTIFF terrain";
+    ASSERT_TRUE(isFile(out/"maxHeight.tif"))
+        << "no GeoTIFF for a GeoTIFF terrain";
 
     for (const word ext : {"asc", "tif"})
     {

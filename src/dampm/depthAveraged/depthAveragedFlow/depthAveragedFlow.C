@@ -605,16 +605,18 @@ void Foam::depthAveragedFlow::particlesToGrid()
     const label n = particles_.size();
     const double* x = particles_.column(particleArrays::X);
     const double* y = particles_.column(particleArrays::Y);
-    double lo[3] = {GREAT, GREAT, 0}, hi[3] = {-GREAT, -GREAT, 0};
+    double xLo = GREAT, xHi = -GREAT, yLo = GREAT, yHi = -GREAT;
     #pragma omp parallel for schedule(static) \
-        reduction(min:lo[:2]) reduction(max:hi[:2])
+        reduction(min:xLo, yLo) reduction(max:xHi, yHi)
     for (label i = 0; i < n; ++i)
     {
-        lo[0] = x[i] < lo[0] ? x[i] : lo[0];
-        hi[0] = x[i] > hi[0] ? x[i] : hi[0];
-        lo[1] = y[i] < lo[1] ? y[i] : lo[1];
-        hi[1] = y[i] > hi[1] ? y[i] : hi[1];
+        xLo = x[i] < xLo ? x[i] : xLo;
+        xHi = x[i] > xHi ? x[i] : xHi;
+        yLo = y[i] < yLo ? y[i] : yLo;
+        yHi = y[i] > yHi ? y[i] : yHi;
     }
+    const double lo[3] = {xLo, yLo, 0};
+    const double hi[3] = {xHi, yHi, 0};
     activeNodes_ = stencilNodes_;
     stencilNodes_ = n ? g.stencilBox(lo, hi) : nodeBox();
     activeNodes_.unite(stencilNodes_);

@@ -259,12 +259,16 @@ bool Foam::particleArrays::sortByCell
         }
     }
 
-    bool sorted = true;
-    #pragma omp parallel for schedule(static) reduction(&&:sorted)
+    #pragma omp parallel for schedule(static)
     for (label i = 0; i < size_; ++i)
     {
         cellp[i] = g.cellOf(x[i], y[i], z[i]);
-        sorted = sorted && (i == 0 || g.cellOf(x[i-1], y[i-1], z[i-1]) <= cellp[i]);
+    }
+    bool sorted = true;
+    #pragma omp parallel for schedule(static) reduction(&&:sorted)
+    for (label i = 1; i < size_; ++i)
+    {
+        sorted = sorted && cellp[i - 1] <= cellp[i];
     }
 
     // Counting sort: cellStart is the exclusive prefix sum of the counts
@@ -284,15 +288,14 @@ bool Foam::particleArrays::sortByCell
     }
     permute();
 
-    // The columns now live in other buffers: refresh the cells from them
-    const double* xs = column(X);
-    const double* ys = column(Y);
-    const double* zs = column(Z);
-
+    // The sorted cells follow from cellStart
     #pragma omp parallel for schedule(static)
-    for (label k = 0; k < size_; ++k)
+    for (label c = 0; c < nCells; ++c)
     {
-        cellp[k] = g.cellOf(xs[k], ys[k], zs[k]);
+        for (label k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
+        {
+            cellp[k] = c;
+        }
     }
     return true;
 }

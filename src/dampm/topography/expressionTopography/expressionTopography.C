@@ -18,7 +18,12 @@ namespace Foam
 namespace topographyModels
 {
     defineTypeNameAndDebug(expressionTopography, 0);
-    addToRunTimeSelectionTable(topographyModel, expressionTopography, dictionary);
+    addToRunTimeSelectionTable
+    (
+        topographyModel,
+        expressionTopography,
+        dictionary
+    );
 }
 }
 
