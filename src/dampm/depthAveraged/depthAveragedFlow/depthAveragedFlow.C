@@ -12,8 +12,6 @@ License
 #include "visitShape.H"
 #include "transfers.H"
 #include "particleCloudIO.H"
-#include "wallPolyPatch.H"
-#include "emptyPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -43,53 +41,6 @@ Foam::scalar Foam::depthAveragedFlow::readPositive
             << " > 0" << exit(FatalIOError);
     }
     return value;
-}
-
-
-void Foam::depthAveragedFlow::readSides()
-{
-    const gridGeometry& g = grid_.geometry();
-    // Sides with faces of a wall patch (+1) or another patch (+2)
-    int kinds[2][2] = {{0, 0}, {0, 0}};
-    for (const polyPatch& pp : grid_.mesh().boundaryMesh())
-    {
-        if (isA<emptyPolyPatch>(pp))
-        {
-            continue;
-        }
-        const int kind = isA<wallPolyPatch>(pp) ? 1 : 2;
-        for (const point& c : pp.faceCentres())
-        {
-            for (int d = 0; d < 2; ++d)
-            {
-                const scalar tol = 1e-6*g.dx[d];
-                if (mag(c[d] - g.origin[d]) < tol)
-                {
-                    kinds[d][0] |= kind;
-                }
-                if (mag(c[d] - g.upper(d)) < tol)
-                {
-                    kinds[d][1] |= kind;
-                }
-            }
-        }
-    }
-    const char* sideNames[2][2] = {{"x min", "x max"}, {"y min", "y max"}};
-    for (int d = 0; d < 2; ++d)
-    {
-        for (int s = 0; s < 2; ++s)
-        {
-            if (kinds[d][s] == 3)
-            {
-                FatalErrorInFunction
-                    << "the " << sideNames[d][s] << " side of the domain has"
-                    << " faces of wall and of open patches; allowed: one"
-                    << " type per side (see system/blockMeshDict)"
-                    << exit(FatalError);
-            }
-            sides_.wall[d][s] = (kinds[d][s] == 1);
-        }
-    }
 }
 
 
@@ -434,7 +385,15 @@ Foam::depthAveragedFlow::depthAveragedFlow
     friction_ = bedFrictionModel::New(withDefaults);
     rheology_ = rheologyModel::New(withDefaults);
 
-    readSides();
+    {
+        bool wall[3][2];
+        grid_.wallSides(wall);
+        for (int d = 0; d < 2; ++d)
+        {
+            sides_.wall[d][0] = wall[d][0];
+            sides_.wall[d][1] = wall[d][1];
+        }
+    }
 
     // Solver fields of the columns
     typedef particleArrays::fieldKind kind;

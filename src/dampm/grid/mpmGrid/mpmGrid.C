@@ -10,6 +10,7 @@ License
 
 #include "mpmGrid.H"
 #include "emptyPolyPatch.H"
+#include "wallPolyPatch.H"
 #include "boundBox.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -263,6 +264,53 @@ Foam::point Foam::mpmGrid::nodePosition(const label nodei) const
         geom_.nodeCoord(1, ijk[1]),
         is2D() ? 0 : geom_.nodeCoord(2, ijk[2])
     );
+}
+
+
+void Foam::mpmGrid::wallSides(bool wall[3][2]) const
+{
+    const gridGeometry& g = geom_;
+    // Sides with faces of a wall patch (+1) or another patch (+2)
+    int kinds[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        const int kind = isA<wallPolyPatch>(pp) ? 1 : 2;
+        for (const point& c : pp.faceCentres())
+        {
+            for (int d = 0; d < g.dim; ++d)
+            {
+                const scalar tol = 1e-6*g.dx[d];
+                if (mag(c[d] - g.origin[d]) < tol)
+                {
+                    kinds[d][0] |= kind;
+                }
+                if (mag(c[d] - g.upper(d)) < tol)
+                {
+                    kinds[d][1] |= kind;
+                }
+            }
+        }
+    }
+    const char* axes = "xyz";
+    for (int d = 0; d < 3; ++d)
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            if (kinds[d][s] == 3)
+            {
+                FatalErrorInFunction
+                    << "the " << axes[d] << (s ? " max" : " min")
+                    << " side of the domain has faces of wall and of open"
+                    << " patches; allowed: one type per side (see"
+                    << " system/blockMeshDict)" << exit(FatalError);
+            }
+            wall[d][s] = (kinds[d][s] == 1);
+        }
+    }
 }
 
 
