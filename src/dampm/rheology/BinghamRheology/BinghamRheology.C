@@ -22,16 +22,6 @@ namespace rheologyModels
 }
 }
 
-const Foam::Enum
-<
-    Foam::rheologyModels::BinghamRheology::regularisationType
->
-Foam::rheologyModels::BinghamRheology::regularisationNames
-({
-    { regularisationType::Papanastasiou, "Papanastasiou" },
-    { regularisationType::biViscous, "biViscous" },
-});
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -41,45 +31,15 @@ Foam::rheologyModels::BinghamRheology::BinghamRheology
 )
 :
     NewtonianRheology(coeffs),
-    tauY_(readNonNegative("tauY")),
-    regularisation_
-    (
-        regularisationNames.getOrDefault
-        (
-            "regularisation",
-            coeffs,
-            regularisationType::Papanastasiou
-        )
-    ),
-    m_(coeffs.getOrDefault<scalar>("m", 100)),
-    muMax_(0)
-{
-    if (!(m_ > 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "m = " << m_ << " is invalid; allowed: m > 0 [s]"
-            << exit(FatalIOError);
-    }
-    if (regularisation_ == regularisationType::biViscous)
-    {
-        muMax_ = coeffs.get<scalar>("muMax");
-        if (!(muMax_ > mu_))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "muMax = " << muMax_ << " is invalid; allowed: muMax > mu"
-                << " = " << mu_ << " [Pa s]" << exit(FatalIOError);
-        }
-    }
-}
+    viscosity_(coeffs, yieldViscosity::lawType::Bingham)
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::rheologyModels::BinghamRheology::maxViscosity() const
 {
-    return regularisation_ == regularisationType::biViscous
-        ? muMax_
-        : mu_ + m_*tauY_;
+    return viscosity_.maxViscosity();
 }
 
 
@@ -88,38 +48,11 @@ void Foam::rheologyModels::BinghamRheology::stress
     const shallowParticles& p
 ) const
 {
-    const double mu = mu_;
-    const double tauY = tauY_;
-    const double m = m_;
-    const double muMax = muMax_;
-
-    if (regularisation_ == regularisationType::Papanastasiou)
+    const yieldViscosity muEff(viscosity_);
+    viscousStress(p, [&muEff](const double gammaDot)
     {
-        // tauY (1 - exp(-m g))/g = tauY m phi(m g), phi(x) = -expm1(-x)/x
-        viscousStress
-        (
-            p,
-            [=](const double gammaDot)
-            {
-                const double x = m*gammaDot;
-                const double phi = x > 1e-8 ? -std::expm1(-x)/x : 1 - 0.5*x;
-                return mu + tauY*m*phi;
-            }
-        );
-    }
-    else
-    {
-        viscousStress
-        (
-            p,
-            [=](const double gammaDot)
-            {
-                return gammaDot*muMax > tauY + mu*gammaDot
-                    ? mu + tauY/gammaDot
-                    : muMax;
-            }
-        );
-    }
+        return muEff(gammaDot);
+    });
 }
 
 
@@ -134,7 +67,7 @@ void Foam::rheologyModels::BinghamRheology::addResistance
     }
     NewtonianRheology::addResistance(p);
 
-    const double tauY = tauY_;
+    const double tauY = viscosity_.tauY();
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < p.n; ++i)
@@ -146,16 +79,8 @@ void Foam::rheologyModels::BinghamRheology::addResistance
 
 void Foam::rheologyModels::BinghamRheology::describe(Ostream& os) const
 {
-    os  << "Bingham (mu = " << mu_ << " Pa s, tauY = " << tauY_ << " Pa, "
-        << regularisationNames[regularisation_];
-    if (regularisation_ == regularisationType::biViscous)
-    {
-        os  << " muMax = " << muMax_ << " Pa s";
-    }
-    else
-    {
-        os  << " m = " << m_ << " s";
-    }
+    os  << "Bingham (";
+    viscosity_.describe(os);
     os  << ", basal shear " << (basalShear_ ? "on" : "off") << ")";
 }
 
