@@ -1,0 +1,73 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "terrainBarrier.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace barrierModels
+{
+    defineTypeNameAndDebug(terrainBarrier, 0);
+    addToRunTimeSelectionTable(barrierModel, terrainBarrier, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::barrierModels::terrainBarrier::terrainBarrier
+(
+    const word& name,
+    const dictionary& dict,
+    const fileName& caseDir
+)
+:
+    barrierModel(name, dict, caseDir),
+    topography_(topographyModel::New(dict, caseDir))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::barrierModels::terrainBarrier::distance
+(
+    const pointField& points,
+    scalarField& phi,
+    vectorField& normal
+) const
+{
+    const scalar delta = 0.005;
+    const topographyModel& Z = *topography_;
+    phi.setSize(points.size());
+    normal.setSize(points.size());
+
+    forAll(points, i)
+    {
+        const scalar x = points[i].x(), y = points[i].y();
+        const scalar Zx = (Z.Z(x + delta, y) - Z.Z(x - delta, y))/(2*delta);
+        const scalar Zy = (Z.Z(x, y + delta) - Z.Z(x, y - delta))/(2*delta);
+        const scalar norm = std::sqrt(1 + Zx*Zx + Zy*Zy);
+        phi[i] = (points[i].z() - Z.Z(x, y))/norm;
+        normal[i] = vector(-Zx, -Zy, 1)/norm;
+    }
+}
+
+
+void Foam::barrierModels::terrainBarrier::describeGeometry(Ostream& os) const
+{
+    os  << "terrain ";
+    topography_->describe(os);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,648 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpm3dFlow.H"
+#include "visitShape.H"
+#include "particleCloudIO.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::mpm3dFlow::cloudName("mpm3dCloud");
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::mpm3DParticles Foam::mpm3dFlow::kernelView()
+{
+    particleArrays& p = particles_;
+    mpm3DParticles v;
+    v.n = p.size();
+    for (int d = 0; d < 3; ++d)
+    {
+        v.x[d] = p.column(particleArrays::X + d);
+        v.u[d] = p.column(particleArrays::UX + d);
+    }
+    v.m = p.column(particleArrays::M);
+    v.V = p.column(particleArrays::VOL);
+    for (int c = 0; c < 9; ++c)
+    {
+        v.C[c] = p.column(gradU_ + c);
+    }
+    for (int c = 0; c < 6; ++c)
+    {
+        v.sigma[c] = p.column(sigma_ + c);
+    }
+    v.J = p.column(J_);
+    v.div = p.column(div_);
+    return v;
+}
+
+
+Foam::materialParticles Foam::mpm3dFlow::materialView()
+{
+    const mpm3DParticles k = kernelView();
+    materialParticles v;
+    v.n = k.n;
+    for (int c = 0; c < 9; ++c)
+    {
+        v.L[c] = k.C[c];
+    }
+    v.J = k.J;
+    v.div = k.div;
+    for (int c = 0; c < 6; ++c)
+    {
+        v.sigma[c] = particles_.column(sigma_ + c);
+    }
+    v.p = particles_.column(p_);
+    return v;
+}
+
+
+void Foam::mpm3dFlow::seed(const dictionary& regions)
+{
+    const gridGeometry& g = grid_.geometry();
+    const label n = nPerCell_;
+    const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*n*n);
+    const scalar rho0 = material_->rho();
+    const scalar gMag = mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
+
+    for (const entry& e : regions)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(regions)
+                << "initialRegions entry " << e.keyword() << " is not a"
+                << " dictionary; allowed: name { type box; min (..); max (..);"
+                << " }" << exit(FatalIOError);
+        }
+        const dictionary& dict = e.dict();
+        const word type = dict.get<word>("type");
+        if (type != "box")
+        {
+            FatalIOErrorInFunction(dict)
+                << "type " << type << " is invalid; allowed: box"
+                << exit(FatalIOError);
+        }
+        const boundBox box(dict.get<point>("min"), dict.get<point>("max"));
+        const vector U = dict.getOrDefault<vector>("U", Zero);
+        const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
+        const scalar zs =
+            dict.getOrDefault<scalar>("freeSurface", box.max().z());
+
+        std::vector<point> pts;
+        for (label k = 0; k < g.nCells[2]*n; ++k)
+        {
+            const scalar z = g.origin[2] + (k + 0.5)*g.dx[2]/n;
+            for (label j = 0; j < g.nCells[1]*n; ++j)
+            {
+                const scalar y = g.origin[1] + (j + 0.5)*g.dx[1]/n;
+                for (label i = 0; i < g.nCells[0]*n; ++i)
+                {
+                    const point x
+                    (
+                        g.origin[0] + (i + 0.5)*g.dx[0]/n, y, z
+                    );
+                    if (box.contains(x))
+                    {
+                        pts.push_back(x);
+                    }
+                }
+            }
+        }
+        if (pts.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "initial region " << e.keyword() << " (" << box.min()
+                << " to " << box.max() << ") holds no particle position of"
+                << " the grid" << exit(FatalIOError);
+        }
+
+        const label first = particles_.append(label(pts.size()));
+        for (size_t q = 0; q < pts.size(); ++q)
+        {
+            const label i = first + label(q);
+            const scalar p =
+                hydrostatic ? rho0*gMag*max(zs - pts[q].z(), 0.0) : 0;
+            const scalar J = material_->restJ(p);
+            for (int d = 0; d < 3; ++d)
+            {
+                particles_.column(particleArrays::X + d)[i] = pts[q][d];
+                particles_.column(particleArrays::UX + d)[i] = U[d];
+            }
+            particles_.column(particleArrays::VOL)[i] = subVolume;
+            particles_.column(particleArrays::M)[i] = rho0*subVolume/J;
+            particles_.column(J_)[i] = J;
+            particles_.column(p_)[i] = p;
+            // xx, yy, zz of the symmetric tensor
+            particles_.column(sigma_)[i] = -p;
+            particles_.column(sigma_ + 3)[i] = -p;
+            particles_.column(sigma_ + 5)[i] = -p;
+        }
+        Info<< "Initial region " << e.keyword() << ": " << pts.size()
+            << " particles" << (hydrostatic ? ", hydrostatic" : "") << endl;
+    }
+    if (particles_.size() == 0)
+    {
+        FatalIOErrorInFunction(regions)
+            << "initialRegions holds no region: nothing to simulate"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::scalar Foam::mpm3dFlow::removeOutflow()
+{
+    const gridGeometry& g = grid_.geometry();
+    const label n = particles_.size();
+    double* x[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        x[d] = particles_.column(particleArrays::X + d);
+    }
+    const double* m = particles_.column(particleArrays::M);
+    flagged_.assign(n, 0);
+    label nOut = 0;
+
+    #pragma omp parallel for schedule(static) reduction(+:nOut)
+    for (label i = 0; i < n; ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            // A hair inside: the particle's cell is the last one
+            const double eps = 1e-9*g.dx[d];
+            const double lo = g.origin[d], hi = g.upper(d);
+            if (x[d][i] < lo || x[d][i] > hi)
+            {
+                const bool wall = settings_.wall[d][x[d][i] > hi];
+                if (wall)
+                {
+                    x[d][i] = x[d][i] < lo ? lo + eps : hi - eps;
+                }
+                else
+                {
+                    flagged_[i] = 1;
+                }
+            }
+        }
+        nOut += flagged_[i];
+    }
+    if (!nOut)
+    {
+        return 0;
+    }
+
+    // Tallied in storage order: the same on any number of threads
+    scalar removed = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        if (flagged_[i])
+        {
+            removed += m[i];
+            forAll(barriers_, b)
+            {
+                if
+                (
+                    barriers_[b].measuresOvertopping()
+                 && barriers_[b].passed(x[0][i], x[1][i], x[2][i])
+                )
+                {
+                    barriers_[b].addPassedOutflow(m[i]);
+                }
+            }
+        }
+    }
+    particles_.removeFlagged(flagged_);
+    return removed;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpm3dFlow::mpm3dFlow
+(
+    const mpmGrid& grid,
+    const dictionary& dict,
+    const vector& g
+)
+:
+    grid_(grid),
+    nPerCell_(dict.getOrDefault<label>("particlesPerCell", 2)),
+    gradU_(-1),
+    sigma_(-1),
+    p_(-1),
+    J_(-1),
+    div_(-1),
+    schedule_(grid.geometry()),
+    outflowMass_(0)
+{
+    if (grid.is2D())
+    {
+        FatalErrorInFunction
+            << "mpm3dFoam needs a 3D mesh; this one is one cell thick with"
+            << " empty patches (see system/blockMeshDict)" << exit(FatalError);
+    }
+    if (nPerCell_ < 1 || nPerCell_ > 8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "particlesPerCell = " << nPerCell_ << " is invalid; allowed:"
+            << " 1 to 8 (per cell and axis)" << exit(FatalIOError);
+    }
+
+    dictionary shapeDict(dict);
+    if (!shapeDict.found("shapeFunction"))
+    {
+        shapeDict.add("shapeFunction", word("quadraticBSpline"));
+    }
+    shape_ = shapeFunction::New(shapeDict, 0.5/nPerCell_);
+    material_ = materialModel::New(dict);
+
+    // Kernel settings
+    for (int d = 0; d < 3; ++d)
+    {
+        settings_.g[d] = g[d];
+    }
+    settings_.rho0 = material_->rho();
+    settings_.smoothJ = material_->volumetricSmoothing();
+    settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
+    settings_.damping = dict.getOrDefault<scalar>("damping", 0);
+    if (!(settings_.flipRatio >= 0 && settings_.flipRatio <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "flipRatio = " << settings_.flipRatio << " is invalid;"
+            << " allowed: 0 (APIC) to 1 (pure FLIP)" << exit(FatalIOError);
+    }
+    if (!(settings_.damping >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "damping = " << settings_.damping << " is invalid; allowed:"
+            << " >= 0 [1/s]" << exit(FatalIOError);
+    }
+    grid_.wallSides(settings_.wall);
+
+    // Barriers
+    const fileName caseDir = grid.mesh().time().path();
+    const dictionary& barrierDicts = dict.subOrEmptyDict("barriers");
+    for (const entry& e : barrierDicts)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(barrierDicts)
+                << "barriers entry " << e.keyword() << " is not a dictionary;"
+                << " allowed: name { type plane|box|triSurface|terrain; ... }"
+                << exit(FatalIOError);
+        }
+        barriers_.append(barrierModel::New(e.keyword(), e.dict(), caseDir));
+        barriers_.last().findContactNodes(grid.geometry());
+    }
+
+    // Particle fields
+    typedef particleArrays::fieldKind kind;
+    gradU_ = particles_.addField("gradU", kind::tensor);
+    sigma_ = particles_.addField("sigma", kind::symmTensor);
+    p_ = particles_.addField("p", kind::scalar);
+    J_ = particles_.addField("J", kind::scalar, 1);
+    div_ = particles_.addField("div", kind::internal);
+    material_->addFields(particles_);
+
+    nodes_.resize(grid.geometry().nNodes());
+
+    // The particles: the cloud of the start time, or the initial regions
+    const Time& runTime = grid.mesh().time();
+    if (particleCloudIO::found(grid.mesh(), cloudName, runTime.timeName()))
+    {
+        const wordList missing = particleCloudIO::read
+        (
+            particles_, grid.mesh(), cloudName, runTime.timeName()
+        );
+        Info<< "Read " << particles_.size() << " particles of cloud "
+            << cloudName << " at time " << runTime.timeName() << endl;
+        if (!missing.empty())
+        {
+            WarningInFunction
+                << "fields " << missing << " of cloud " << cloudName
+                << " are missing at time " << runTime.timeName()
+                << ": started from their initial values" << endl;
+        }
+    }
+    else
+    {
+        if (!dict.isDict("initialRegions"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "no cloud " << cloudName << " at time "
+                << runTime.timeName() << " and no initialRegions"
+                << " sub-dictionary: nothing to simulate"
+                << exit(FatalIOError);
+        }
+        seed(dict.subDict("initialRegions"));
+    }
+
+    scalar mMax = 0;
+    const double* m = particles_.column(particleArrays::M);
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        mMax = max(mMax, m[i]);
+    }
+    settings_.massTol = 1e-12*mMax;
+    flagged_.reserve(particles_.size());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::mpm3dFlow::writeState(dictionary& state) const
+{
+    state.set("outflowMass", outflowMass_);
+    state.set("massTolerance", settings_.massTol);
+    forAll(barriers_, b)
+    {
+        state.set
+        (
+            word(barriers_[b].name() + "PassedOutflow"),
+            barriers_[b].passedOutflow()
+        );
+    }
+}
+
+
+void Foam::mpm3dFlow::readState(const dictionary& state)
+{
+    outflowMass_ = state.get<scalar>("outflowMass");
+    settings_.massTol =
+        state.getOrDefault<scalar>("massTolerance", settings_.massTol);
+    forAll(barriers_, b)
+    {
+        barriers_[b].setPassedOutflow
+        (
+            state.getOrDefault<scalar>
+            (
+                word(barriers_[b].name() + "PassedOutflow"),
+                0
+            )
+        );
+    }
+}
+
+
+void Foam::mpm3dFlow::describe(Ostream& os) const
+{
+    const gridGeometry& g = grid_.geometry();
+    os  << "mpm3dFoam: explicit 3D MPM, update stress last" << nl
+        << "    grid: " << g.nCells[0] << " x " << g.nCells[1] << " x "
+        << g.nCells[2] << " cells of " << g.dx[0] << " x " << g.dx[1]
+        << " x " << g.dx[2] << " m" << nl
+        << "    particles: " << particles_.size() << " ("
+        << nPerCell_ << " per cell and axis when seeded)" << nl
+        << "    shape function: " << shape_->type() << nl
+        << "    transfer: "
+        << (settings_.flipRatio > 0 ? "FLIP/PIC blend" : "APIC");
+    if (settings_.flipRatio > 0)
+    {
+        os  << " (FLIP share " << settings_.flipRatio << ")";
+    }
+    os  << nl << "    material: ";
+    material_->describe(os);
+    os  << nl << "    gravity: (" << settings_.g[0] << ' ' << settings_.g[1]
+        << ' ' << settings_.g[2] << ") m/s^2" << nl
+        << "    damping: ";
+    if (settings_.damping > 0)
+    {
+        os  << settings_.damping << " 1/s";
+    }
+    else
+    {
+        os  << "none (not computed)";
+    }
+    os  << nl << "    sides:";
+    const char* axes = "xyz";
+    for (int d = 0; d < 3; ++d)
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            os  << ' ' << axes[d] << (s ? " max " : " min ")
+                << (settings_.wall[d][s] ? "wall" : "open") << ';';
+        }
+    }
+    os  << nl << "    barriers: ";
+    if (barriers_.empty())
+    {
+        os  << "none (no contact computed)" << nl;
+    }
+    else
+    {
+        os  << barriers_.size() << nl;
+        for (const barrierModel& b : barriers_)
+        {
+            b.describe(os);
+        }
+    }
+    os  << endl;
+}
+
+
+void Foam::mpm3dFlow::particlesToGrid()
+{
+    const gridGeometry& g = grid_.geometry();
+    particles_.sortByCell(g, schedule_.maxStale());
+
+    // Work on the nodes the particles touch, and clear those of last step
+    const label n = particles_.size();
+    const double* x[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        x[d] = particles_.column(particleArrays::X + d);
+    }
+    double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
+    #pragma omp parallel for schedule(static) \
+        reduction(min:lo[:3]) reduction(max:hi[:3])
+    for (label i = 0; i < n; ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            lo[d] = x[d][i] < lo[d] ? x[d][i] : lo[d];
+            hi[d] = x[d][i] > hi[d] ? x[d][i] : hi[d];
+        }
+    }
+    activeNodes_ = stencilNodes_;
+    stencilNodes_ = n ? g.stencilBox(lo, hi) : nodeBox();
+    activeNodes_.unite(stencilNodes_);
+    zeroNodes3D(g, activeNodes_, nodes_);
+
+    const mpm3DParticles view = kernelView();
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            particlesToGrid3D
+            (
+                g, schedule_, kernel, stencilNodes_,
+                particles_.cellStart().data(), view, settings_, nodes_
+            );
+        }
+    );
+}
+
+
+Foam::scalar Foam::mpm3dFlow::stableDeltaT
+(
+    const scalar maxCo,
+    word& limit
+) const
+{
+    const gridGeometry& g = grid_.geometry();
+    const label n = particles_.size();
+    const double* u[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        u[d] = particles_.column(particleArrays::UX + d);
+    }
+    double maxU2 = 0;
+    #pragma omp parallel for schedule(static) reduction(max:maxU2)
+    for (label i = 0; i < n; ++i)
+    {
+        const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
+        maxU2 = u2 > maxU2 ? u2 : maxU2;
+    }
+    const scalar h = min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    scalar dt = maxCo*h/(material_->waveSpeed() + std::sqrt(maxU2));
+    limit = "wave";
+
+    const scalar mu = material_->explicitViscosity();
+    if (mu > 0)
+    {
+        const scalar dtVisc = maxCo*material_->rho()*h*h/(6*mu);
+        if (dtVisc < dt)
+        {
+            dt = dtVisc;
+            limit = "viscous";
+        }
+    }
+    return dt;
+}
+
+
+void Foam::mpm3dFlow::updateGrid(const scalar dt)
+{
+    gridUpdate3D(grid_.geometry(), activeNodes_, settings_, dt, nodes_);
+}
+
+
+void Foam::mpm3dFlow::contact(const scalar dt, const scalar t)
+{
+    for (barrierModel& b : barriers_)
+    {
+        b.applyContact(nodes_, settings_.massTol, dt, t);
+    }
+}
+
+
+void Foam::mpm3dFlow::gridToParticles(const scalar dt)
+{
+    const gridGeometry& g = grid_.geometry();
+    const mpm3DParticles view = kernelView();
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            gridToParticles3D(g, kernel, settings_, dt, nodes_, view);
+        }
+    );
+    material_->updateStress(particles_, materialView(), dt);
+    outflowMass_ += removeOutflow();
+}
+
+
+Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
+{
+    const label n = particles_.size();
+    const double* x[3];
+    const double* u[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        x[d] = particles_.column(particleArrays::X + d);
+        u[d] = particles_.column(particleArrays::UX + d);
+    }
+    const double* m = particles_.column(particleArrays::M);
+    const double g[3] = {settings_.g[0], settings_.g[1], settings_.g[2]};
+
+    double mass = 0, ke = 0, pe = 0, maxU2 = 0;
+    double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
+    #pragma omp parallel for schedule(static) reduction(+:mass, ke, pe) \
+        reduction(max:maxU2) reduction(min:lo[:3]) reduction(max:hi[:3])
+    for (label i = 0; i < n; ++i)
+    {
+        const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
+        mass += m[i];
+        ke += 0.5*m[i]*u2;
+        pe -= m[i]*(g[0]*x[0][i] + g[1]*x[1][i] + g[2]*x[2][i]);
+        maxU2 = u2 > maxU2 ? u2 : maxU2;
+        for (int d = 0; d < 3; ++d)
+        {
+            lo[d] = x[d][i] < lo[d] ? x[d][i] : lo[d];
+            hi[d] = x[d][i] > hi[d] ? x[d][i] : hi[d];
+        }
+    }
+
+    totals t;
+    t.mass = mass;
+    t.kineticEnergy = ke;
+    t.potentialEnergy = pe;
+    t.maxSpeed = std::sqrt(maxU2);
+    t.extent = n
+        ? boundBox(point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2]))
+        : boundBox(point::zero, point::zero);
+    return t;
+}
+
+
+Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
+{
+    const barrierModel& bar = barriers_[b];
+    if (!bar.measuresOvertopping())
+    {
+        return 0;
+    }
+    const label n = particles_.size();
+    const double* x = particles_.column(particleArrays::X);
+    const double* y = particles_.column(particleArrays::Y);
+    const double* z = particles_.column(particleArrays::Z);
+    const double* m = particles_.column(particleArrays::M);
+    double passed = 0;
+    #pragma omp parallel for schedule(static) reduction(+:passed)
+    for (label i = 0; i < n; ++i)
+    {
+        passed += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
+    }
+    return passed + bar.passedOutflow();
+}
+
+
+bool Foam::mpm3dFlow::finite() const
+{
+    const label nCols = particles_.nColumns();
+    const label n = particles_.size();
+    bool ok = true;
+    for (label c = 0; c < nCols && ok; ++c)
+    {
+        const double* a = particles_.column(c);
+        #pragma omp parallel for schedule(static) reduction(&&:ok)
+        for (label i = 0; i < n; ++i)
+        {
+            ok = ok && std::isfinite(a[i]);
+        }
+    }
+    return ok;
+}
+
+
+// ************************************************************************* //
