@@ -58,9 +58,9 @@ Foam::materialModel::materialModel
 :
     coeffs_(coeffs),
     rho_(readCoeff("rho")),
-    volumetricSmoothing_
+    pressureSmoothing_
     (
-        coeffs.getOrDefault<bool>("volumetricSmoothing", smoothByDefault)
+        coeffs.getOrDefault<bool>("pressureSmoothing", smoothByDefault)
     )
 {}
 

@@ -270,7 +270,7 @@ Foam::mpm3dFlow::mpm3dFlow
         settings_.g[d] = g[d];
     }
     settings_.rho0 = material_->rho();
-    settings_.smoothJ = material_->volumetricSmoothing();
+    settings_.smoothJ = material_->pressureSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
     if (!(settings_.flipRatio >= 0 && settings_.flipRatio <= 1))

@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Application
+    mpm3dFoam
+
+Group
+    grpMPMSolvers
+
+Description
+    Explicit 3D Material Point Method solver for the impact of landslides,
+    mudflows and debris flows on rigid barriers: update stress last, APIC
+    (or FLIP/PIC) transfers on the 3D blockMesh grid, weakly compressible
+    fluids (Newtonian, Bingham, Herschel-Bulkley) or solids (linear elastic,
+    Drucker-Prager), barriers (planes, boxes, STL surfaces, terrain DTMs)
+    with contact at the grid nodes. The method: doc/mpm3dFoam.md.
+
+    Reads constant/mpm3dProperties, constant/g and system/controlDict
+    (adjustTimeStep, maxCo, maxDeltaT); writes the particle cloud mpm3dCloud
+    and the node velocity U at every write time, and every step
+    postProcessing/mpm3dFoam/<startTime>/summary.dat and energy.dat and, for
+    every barrier, postProcessing/<barrier>/<startTime>/force.dat (and
+    overtopping.dat when it measures overtopping).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pointFields.H"
+#include "mpmGrid.H"
+#include "mpm3dFlow.H"
+#include "particleCloudIO.H"
+#include "timeSeriesFile.H"
+#include "stepTimers.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Explicit 3D MPM solver for the impact of flows on barriers"
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+
+    if (startedFromRegions)
+    {
+        #include "writeFields.H"
+        runTime.writeNow();
+    }
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
+
+        #include "setMPMDeltaT.H"
+
+        ++runTime;
+
+        timers.run(stepTimers::grid, [&]{ flow.updateGrid(dt); });
+        timers.run(stepTimers::contact, [&]
+        {
+            flow.contact(dt, runTime.value());
+        });
+        timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
+        timers.countStep(flow.particles().size());
+
+        timers.run(stepTimers::IO, [&]
+        {
+            #include "writeOutput.H"
+        });
+    }
+
+    #include "reportBarriers.H"
+    timers.report(Info);
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
