@@ -44,42 +44,10 @@ Foam::scalar Foam::depthAveragedFlow::readPositive
 }
 
 
-Foam::shallowColumns Foam::depthAveragedFlow::columns()
+template<class View>
+void Foam::depthAveragedFlow::bindCommon(View& v)
 {
     particleArrays& p = particles_;
-    shallowColumns c;
-    c.n = p.size();
-    c.x = p.column(particleArrays::X);
-    c.y = p.column(particleArrays::Y);
-    c.m = p.column(particleArrays::M);
-    c.V = p.column(particleArrays::VOL);
-    for (int k = 0; k < 4; ++k)
-    {
-        c.C[k] = p.column(gradU_ + k);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-        c.sigma[k] = p.column(sigma_ + k);
-    }
-    c.h = p.column(h_);
-    c.a = p.column(A_);
-    c.kappa = p.column(kappa_);
-    c.Zb = p.column(Zb_);
-    c.gradZetaX = p.column(gradZeta_);
-    c.gradZetaY = p.column(gradZeta_ + 1);
-    c.gradZx = p.column(gradZ_);
-    c.gradZy = p.column(gradZ_ + 1);
-    c.s = p.column(basal_);
-    c.k1 = p.column(basal_ + 1);
-    c.k2 = p.column(basal_ + 2);
-    return c;
-}
-
-
-Foam::shallowParticles Foam::depthAveragedFlow::modelView()
-{
-    particleArrays& p = particles_;
-    shallowParticles v;
     v.n = p.size();
     v.m = p.column(particleArrays::M);
     v.h = p.column(h_);
@@ -96,6 +64,30 @@ Foam::shallowParticles Foam::depthAveragedFlow::modelView()
     v.s = p.column(basal_);
     v.k1 = p.column(basal_ + 1);
     v.k2 = p.column(basal_ + 2);
+}
+
+
+Foam::shallowColumns Foam::depthAveragedFlow::columns()
+{
+    particleArrays& p = particles_;
+    shallowColumns c;
+    bindCommon(c);
+    c.x = p.column(particleArrays::X);
+    c.y = p.column(particleArrays::Y);
+    c.V = p.column(particleArrays::VOL);
+    c.Zb = p.column(Zb_);
+    c.gradZetaX = p.column(gradZeta_);
+    c.gradZetaY = p.column(gradZeta_ + 1);
+    c.gradZx = p.column(gradZ_);
+    c.gradZy = p.column(gradZ_ + 1);
+    return c;
+}
+
+
+Foam::shallowParticles Foam::depthAveragedFlow::modelView()
+{
+    shallowParticles v;
+    bindCommon(v);
     v.rho = rho_;
     v.g = g_;
     v.hMin = hMin_;
