@@ -76,15 +76,20 @@ def read_dat(path):
     return {name: data[:, k] for k, name in enumerate(header)}
 
 
-def latest_time(case):
-    """Largest numeric time directory of a case."""
-    times = []
+def times(case):
+    """Numeric time directories of a case, in time order."""
+    found = []
     for d in os.listdir(case):
         try:
-            times.append((float(d), d))
+            found.append((float(d), d))
         except ValueError:
             pass
-    return max(times)[1]
+    return [d for _, d in sorted(found)]
+
+
+def latest_time(case):
+    """Largest numeric time directory of a case."""
+    return times(case)[-1]
 
 
 def ritter(x, t, h0, x0, g=9.81):

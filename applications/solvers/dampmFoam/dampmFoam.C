@@ -52,7 +52,7 @@ int main(int argc, char *argv[])
     if (startedFromRelease)
     {
         #include "writeFields.H"
-        runTime.writeNow();
+        timers.run(stepTimers::IO, [&]{ runTime.writeNow(); });
     }
 
     Info<< "\nStarting time loop\n" << endl;
@@ -78,6 +78,11 @@ int main(int argc, char *argv[])
         {
             #include "writeOutput.H"
         });
+        if (runTime.writeTime())
+        {
+            #include "writeFields.H"
+            timers.run(stepTimers::IO, [&]{ runTime.write(); });
+        }
     }
 
     timers.report(Info);

@@ -40,6 +40,52 @@ def positions(case, time):
     return v.reshape(n, 4)[:, :3]
 
 
+def cellSize(case="."):
+    """Smallest cell side [m] of the case's uniform blockMesh grid, from
+    constant/polyMesh/points."""
+    pts = dp.read_points(case)
+    sides = []
+    for k in (0, 1):
+        steps = np.diff(np.unique(pts[:, k]))
+        if np.ptp(steps) > 1e-9 * steps.max():
+            raise ValueError("%s: the grid is not uniform in %s" % (case, "xy"[k]))
+        sides.append(steps.mean())
+    return min(sides)
+
+
+def frontRadii(case, time, centre, nSectors):
+    """Distance of the farthest column from centre in each of nSectors equal
+    sectors of direction."""
+    p = positions(case, time)
+    r = np.hypot(p[:, 0] - centre[0], p[:, 1] - centre[1])
+    sector = ((np.arctan2(p[:, 1] - centre[1], p[:, 0] - centre[0]) + np.pi)
+              * nSectors / (2 * np.pi)).astype(int) % nSectors
+    radii = np.zeros(nSectors)
+    np.maximum.at(radii, sector, r)
+    return radii
+
+
+def checkRadialFront(case, centre, wallDistance, nSectors=32):
+    """The front stays radially symmetric while it is clear of the sides: at
+    every written time at which the farthest column is more than two cells
+    (the B-spline reach) from them, the front radius varies over nSectors
+    directions by less than one cell, the size read from the case's mesh.
+    Returns the number of times checked."""
+    dx = cellSize(case)
+    checked = 0
+    for t in dp.times(case):
+        if float(t) == 0:
+            continue
+        radii = frontRadii(case, t, centre, nSectors)
+        if radii.max() > wallDistance - 2 * dx:
+            break
+        spread = radii.max() - radii.min()
+        check(spread < dx, "t = %s s: front radius %.3f to %.3f m over %d directions, spread %.4f m < one cell %.4g m"
+              % (t, radii.min(), radii.max(), nSectors, spread, dx))
+        checked += 1
+    return checked
+
+
 def finish():
     if failures:
         print("%d check(s) failed" % len(failures))

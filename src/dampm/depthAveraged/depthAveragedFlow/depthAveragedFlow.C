@@ -13,6 +13,9 @@ License
 #include "transfers.H"
 #include "particleCloudIO.H"
 
+#include <cstdio>
+#include <cstdlib>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::Enum<Foam::depthAveragedFlow::pressureFormType>
@@ -23,6 +26,8 @@ Foam::depthAveragedFlow::pressureFormNames
 });
 
 const Foam::word Foam::depthAveragedFlow::cloudName("dampmCloud");
+
+const Foam::scalar Foam::depthAveragedFlow::splitHMinFraction = 0.01;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -44,42 +49,10 @@ Foam::scalar Foam::depthAveragedFlow::readPositive
 }
 
 
-Foam::shallowColumns Foam::depthAveragedFlow::columns()
+template<class View>
+void Foam::depthAveragedFlow::bindCommon(View& v)
 {
     particleArrays& p = particles_;
-    shallowColumns c;
-    c.n = p.size();
-    c.x = p.column(particleArrays::X);
-    c.y = p.column(particleArrays::Y);
-    c.m = p.column(particleArrays::M);
-    c.V = p.column(particleArrays::VOL);
-    for (int k = 0; k < 4; ++k)
-    {
-        c.C[k] = p.column(gradU_ + k);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-        c.sigma[k] = p.column(sigma_ + k);
-    }
-    c.h = p.column(h_);
-    c.a = p.column(A_);
-    c.kappa = p.column(kappa_);
-    c.Zb = p.column(Zb_);
-    c.gradZetaX = p.column(gradZeta_);
-    c.gradZetaY = p.column(gradZeta_ + 1);
-    c.gradZx = p.column(gradZ_);
-    c.gradZy = p.column(gradZ_ + 1);
-    c.s = p.column(basal_);
-    c.k1 = p.column(basal_ + 1);
-    c.k2 = p.column(basal_ + 2);
-    return c;
-}
-
-
-Foam::shallowParticles Foam::depthAveragedFlow::modelView()
-{
-    particleArrays& p = particles_;
-    shallowParticles v;
     v.n = p.size();
     v.m = p.column(particleArrays::M);
     v.h = p.column(h_);
@@ -96,6 +69,30 @@ Foam::shallowParticles Foam::depthAveragedFlow::modelView()
     v.s = p.column(basal_);
     v.k1 = p.column(basal_ + 1);
     v.k2 = p.column(basal_ + 2);
+}
+
+
+Foam::shallowColumns Foam::depthAveragedFlow::columns()
+{
+    particleArrays& p = particles_;
+    shallowColumns c;
+    bindCommon(c);
+    c.x = p.column(particleArrays::X);
+    c.y = p.column(particleArrays::Y);
+    c.V = p.column(particleArrays::VOL);
+    c.Zb = p.column(Zb_);
+    c.gradZetaX = p.column(gradZeta_);
+    c.gradZetaY = p.column(gradZeta_ + 1);
+    c.gradZx = p.column(gradZ_);
+    c.gradZy = p.column(gradZ_ + 1);
+    return c;
+}
+
+
+Foam::shallowParticles Foam::depthAveragedFlow::modelView()
+{
+    shallowParticles v;
+    bindCommon(v);
     v.rho = rho_;
     v.g = g_;
     v.hMin = hMin_;
@@ -168,6 +165,25 @@ Foam::scalar Foam::depthAveragedFlow::seedArea() const
 }
 
 
+Foam::scalar Foam::depthAveragedFlow::maxColumnThickness() const
+{
+    const label n = particles_.size();
+    const double* F[4] =
+    {
+        particles_.column(F_), particles_.column(F_ + 1),
+        particles_.column(F_ + 2), particles_.column(F_ + 3)
+    };
+    const double* V = particles_.column(particleArrays::VOL);
+    double hMax = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const double area = std::abs(F[0][i]*F[3][i] - F[1][i]*F[2][i]);
+        hMax = area > 0 && V[i]/area > hMax ? V[i]/area : hMax;
+    }
+    return hMax;
+}
+
+
 Foam::label Foam::depthAveragedFlow::splitColumns()
 {
     if (!(splitRatio_ > 0))
@@ -177,12 +193,14 @@ Foam::label Foam::depthAveragedFlow::splitColumns()
     const gridGeometry& g = grid_.geometry();
     const double cell[2] = {g.dx[0], g.dx[1]};
     const double maxArea = splitRatio_*seedArea();
-    const double hMin = hMin_;
+    const double hSplit = max(hMin_, splitHMin_);
     const label n = particles_.size();
 
-    // Columns to split: footprint above maxArea, not thinner than hMin
-    // (dry for output), both halves inside the domain. Marked in parallel,
-    // listed in storage order: the same children on any number of threads.
+    // Columns to split: footprint above maxArea, not thinner than hSplit
+    // (thinner sheets carry little mass: refining them would multiply the
+    // columns for nothing), both halves inside the domain. Marked in
+    // parallel, listed in storage order: the same children on any number
+    // of threads.
     {
         const double* F[4] =
         {
@@ -199,7 +217,7 @@ Foam::label Foam::depthAveragedFlow::splitColumns()
         {
             const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
             const double area = std::abs(Fi[0]*Fi[3] - Fi[1]*Fi[2]);
-            if (area > maxArea && V[i] >= hMin*area)
+            if (area > maxArea && V[i] >= hSplit*area)
             {
                 double d[2], Fc[4];
                 splitFootprint(Fi, cell, d, Fc);
@@ -316,6 +334,8 @@ Foam::depthAveragedFlow::depthAveragedFlow
     nPerCell_(dict.getOrDefault<label>("particlesPerCell", 2)),
     hMin_(dict.getOrDefault<scalar>("hMin", 1e-4)),
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
+    splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
+    splitHMinGiven_(dict.found("splitHMin")),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
     pressureForm_
     (
@@ -355,6 +375,12 @@ Foam::depthAveragedFlow::depthAveragedFlow
         FatalIOErrorInFunction(dict)
             << "splitRatio = " << splitRatio_ << " is invalid; allowed: 0"
             << " (no splitting) or >= 1 (seed areas)" << exit(FatalIOError);
+    }
+    if (!(splitHMin_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "splitHMin = " << splitHMin_ << " is invalid; allowed:"
+            << " splitHMin >= 0 [m]" << exit(FatalIOError);
     }
 
     dictionary shapeDict(dict);
@@ -487,6 +513,18 @@ Foam::depthAveragedFlow::depthAveragedFlow
         mMax = max(mMax, particles_.column(particleArrays::M)[i]);
     }
     massTol_ = 1e-12*mMax;
+    if (!splitHMinGiven_)
+    {
+        // To three digits: readable in the log, and read back exactly from
+        // the state file on restart
+        char digits[32];
+        std::snprintf
+        (
+            digits, sizeof(digits), "%.3g",
+            splitHMinFraction*maxColumnThickness()
+        );
+        splitHMin_ = std::strtod(digits, nullptr);
+    }
     flagged_.reserve(particles_.size());
     splitList_.reserve(particles_.size());
 }
@@ -509,7 +547,8 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     if (splitRatio_ > 0)
     {
         os  << "above " << splitRatio_ << " seed areas ("
-            << splitRatio_*seedArea() << " m^2)";
+            << splitRatio_*seedArea() << " m^2), if not thinner than "
+            << max(hMin_, splitHMin_) << " m";
     }
     else
     {
@@ -541,6 +580,7 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
 {
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
+    state.set("splitHMin", splitHMin_);
 }
 
 
@@ -548,6 +588,10 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
 {
     outflowMass_ = state.get<scalar>("outflowMass");
     massTol_ = state.getOrDefault<scalar>("massTolerance", massTol_);
+    if (!splitHMinGiven_)
+    {
+        splitHMin_ = state.getOrDefault<scalar>("splitHMin", splitHMin_);
+    }
 }
 
 
