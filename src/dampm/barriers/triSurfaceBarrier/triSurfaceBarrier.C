@@ -11,6 +11,8 @@ License
 #include "triSurfaceBarrier.H"
 #include "addToRunTimeSelectionTable.H"
 #include "OSspecific.H"
+#include <fstream>
+#include <cstring>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,6 +36,31 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
         FatalIOErrorInFunction(dict_)
             << "file " << file_ << ": no such file " << path
             << exit(FatalIOError);
+    }
+
+    // A binary STL whose size disagrees with its triangle count is taken
+    // for ASCII by OpenFOAM's reader, whose scanner then exits the process:
+    // check it here
+    if (path.hasExt("stl") || path.hasExt("STL"))
+    {
+        std::ifstream is(path, std::ios::binary);
+        char head[84] = {};
+        is.read(head, 84);
+        const bool ascii = std::string(head, 5) == "solid";
+        if (!ascii)
+        {
+            uint32_t n = 0;
+            std::memcpy(&n, head + 80, 4);
+            const off_t expected = 84 + 50*off_t(n);
+            if (!is || fileSize(path) != expected)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "file " << file_ << ": " << path << " is not a valid"
+                    << " binary STL (" << fileSize(path) << " bytes, "
+                    << expected << " expected for the " << n
+                    << " triangles it declares)" << exit(FatalIOError);
+            }
+        }
     }
 
     // The readers stop with their own message on a broken file: catch it
