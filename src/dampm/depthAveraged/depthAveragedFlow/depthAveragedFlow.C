@@ -79,6 +79,8 @@ Foam::shallowColumns Foam::depthAveragedFlow::columns()
     bindCommon(c);
     c.x = p.column(particleArrays::X);
     c.y = p.column(particleArrays::Y);
+    c.ux = p.column(particleArrays::UX);
+    c.uy = p.column(particleArrays::UY);
     c.V = p.column(particleArrays::VOL);
     c.Zb = p.column(Zb_);
     c.gradZetaX = p.column(gradZeta_);
@@ -625,18 +627,17 @@ void Foam::depthAveragedFlow::particlesToGrid()
     activeNodes_.unite(stencilNodes_);
     zeroNodes(g, activeNodes_, nodes_);
 
-    double* mom[2] = {nodes_.px.data(), nodes_.py.data()};
     const shallowColumns cols = columns();
+    const columnScatter scatter
+    {
+        g, stencilNodes_, schedule_, particles_.cellStart().data()
+    };
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
-            particlesToGridMomentum<2>
-            (
-                g, schedule_, kernel, particles_, gradU_,
-                nodes_.mass.data(), mom, false
-            );
+            scatterMomentum(scatter, kernel, nodes_, cols);
         }
     );
     nodeHeights
@@ -720,7 +721,10 @@ void Foam::depthAveragedFlow::computeForces()
     }
 
     const shallowColumns cols = columns();
-    const label* cellStart = particles_.cellStart().data();
+    const columnScatter scatter
+    {
+        g, stencilNodes_, schedule_, particles_.cellStart().data()
+    };
     const bool gradientForm = pressureForm_ == pressureFormType::gradient;
 
     // One instantiation per combination of terms: a term a case does not
@@ -735,8 +739,7 @@ void Foam::depthAveragedFlow::computeForces()
             {
                 scatterForces<K, gf(), st(), ba()>
                 (
-                    g, stencilNodes_, schedule_, cellStart, kernel, nodes_,
-                    cols, rho_, g_
+                    scatter, kernel, nodes_, cols, rho_, g_
                 );
             };
             typedef std::true_type T;
