@@ -461,21 +461,13 @@ Foam::depthAveragedFlow::depthAveragedFlow
 
     // The columns: the cloud of the start time, or the release
     const Time& runTime = grid.mesh().time();
-    if (particleCloudIO::found(grid.mesh(), cloudName, runTime.timeName()))
+    wordList missing;
+    const bool restarted = particleCloudIO::readStartTime
+    (
+        particles_, grid.mesh(), cloudName, missing
+    );
+    if (restarted)
     {
-        const wordList missing = particleCloudIO::read
-        (
-            particles_, grid.mesh(), cloudName, runTime.timeName()
-        );
-        Info<< "Read " << particles_.size() << " columns of cloud "
-            << cloudName << " at time " << runTime.timeName() << endl;
-        if (!missing.empty())
-        {
-            WarningInFunction
-                << "fields " << missing << " of cloud " << cloudName
-                << " are missing at time " << runTime.timeName()
-                << ": started from their initial values" << endl;
-        }
         if (missing.found("F"))
         {
             // Footprints of an older cloud: square in cell units, of the
@@ -607,23 +599,8 @@ void Foam::depthAveragedFlow::particlesToGrid()
     particles_.sortByCell(g, schedule_.maxStale());
 
     // Work on the nodes the columns touch, and clear those of last step
-    const label n = particles_.size();
-    const double* x = particles_.column(particleArrays::X);
-    const double* y = particles_.column(particleArrays::Y);
-    double xLo = GREAT, xHi = -GREAT, yLo = GREAT, yHi = -GREAT;
-    #pragma omp parallel for schedule(static) \
-        reduction(min:xLo, yLo) reduction(max:xHi, yHi)
-    for (label i = 0; i < n; ++i)
-    {
-        xLo = x[i] < xLo ? x[i] : xLo;
-        xHi = x[i] > xHi ? x[i] : xHi;
-        yLo = y[i] < yLo ? y[i] : yLo;
-        yHi = y[i] > yHi ? y[i] : yHi;
-    }
-    const double lo[3] = {xLo, yLo, 0};
-    const double hi[3] = {xHi, yHi, 0};
     activeNodes_ = stencilNodes_;
-    stencilNodes_ = n ? g.stencilBox(lo, hi) : nodeBox();
+    stencilNodes_ = particles_.stencilNodes(g);
     activeNodes_.unite(stencilNodes_);
     zeroNodes(g, activeNodes_, nodes_);
 
@@ -959,19 +936,11 @@ void Foam::depthAveragedFlow::diagnostics
 
 bool Foam::depthAveragedFlow::finite() const
 {
-    const label n = particles_.size();
-    bool ok = true;
-    for (const label c : {label(particleArrays::X), label(particleArrays::Y),
-         label(particleArrays::UX), label(particleArrays::UY), h_})
-    {
-        const double* v = particles_.column(c);
-        #pragma omp parallel for schedule(static) reduction(&&:ok)
-        for (label i = 0; i < n; ++i)
-        {
-            ok = ok && std::isfinite(v[i]);
-        }
-    }
-    return ok;
+    return particles_.finite
+    ({
+        particleArrays::X, particleArrays::Y, particleArrays::UX,
+        particleArrays::UY, h_
+    });
 }
 
 

@@ -117,8 +117,8 @@ void Foam::materialModels::DruckerPrager::describe(Ostream& os) const
     os  << "DruckerPrager (rho = " << rho_ << " kg/m^3, E = " << E_
         << " Pa, nu = " << nu_ << ", friction angle " << phi_
         << " deg, dilatancy angle " << psi_ << " deg, cohesion " << cohesion_
-        << " Pa, pressure smoothing "
-        << (pressureSmoothing_ ? "on" : "off") << ")";
+        << " Pa, volumetric smoothing "
+        << (volumetricSmoothing_ ? "on" : "off") << ")";
 }
 
 

@@ -74,8 +74,8 @@ void Foam::materialModels::linearElastic::updateStress
 void Foam::materialModels::linearElastic::describe(Ostream& os) const
 {
     os  << "linearElastic (rho = " << rho_ << " kg/m^3, E = " << E_
-        << " Pa, nu = " << nu_ << ", pressure smoothing "
-        << (pressureSmoothing_ ? "on" : "off") << ")";
+        << " Pa, nu = " << nu_ << ", volumetric smoothing "
+        << (volumetricSmoothing_ ? "on" : "off") << ")";
 }
 
 

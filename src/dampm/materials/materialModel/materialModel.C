@@ -58,9 +58,9 @@ Foam::materialModel::materialModel
 :
     coeffs_(coeffs),
     rho_(readCoeff("rho")),
-    pressureSmoothing_
+    volumetricSmoothing_
     (
-        coeffs.getOrDefault<bool>("pressureSmoothing", smoothByDefault)
+        coeffs.getOrDefault<bool>("volumetricSmoothing", smoothByDefault)
     )
 {}
 

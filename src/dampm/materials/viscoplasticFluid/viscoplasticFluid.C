@@ -147,7 +147,7 @@ void Foam::materialModels::viscoplasticFluid::describe(Ostream& os) const
     {
         os  << ", Maxwell G = " << G_ << " Pa";
     }
-    os  << ", pressure smoothing " << (pressureSmoothing_ ? "on" : "off")
+    os  << ", volumetric smoothing " << (volumetricSmoothing_ ? "on" : "off")
         << ")";
 }
 

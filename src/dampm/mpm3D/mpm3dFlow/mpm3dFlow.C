@@ -12,6 +12,7 @@ License
 #include "visitShape.H"
 #include "particleCloudIO.H"
 #include "Time.H"
+#include <numeric>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -270,7 +271,7 @@ Foam::mpm3dFlow::mpm3dFlow
         settings_.g[d] = g[d];
     }
     settings_.rho0 = material_->rho();
-    settings_.smoothJ = material_->pressureSmoothing();
+    settings_.smoothJ = material_->volumetricSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
     if (!(settings_.flipRatio >= 0 && settings_.flipRatio <= 1))
@@ -316,23 +317,12 @@ Foam::mpm3dFlow::mpm3dFlow
 
     // The particles: the cloud of the start time, or the initial regions
     const Time& runTime = grid.mesh().time();
-    if (particleCloudIO::found(grid.mesh(), cloudName, runTime.timeName()))
-    {
-        const wordList missing = particleCloudIO::read
-        (
-            particles_, grid.mesh(), cloudName, runTime.timeName()
-        );
-        Info<< "Read " << particles_.size() << " particles of cloud "
-            << cloudName << " at time " << runTime.timeName() << endl;
-        if (!missing.empty())
-        {
-            WarningInFunction
-                << "fields " << missing << " of cloud " << cloudName
-                << " are missing at time " << runTime.timeName()
-                << ": started from their initial values" << endl;
-        }
-    }
-    else
+    wordList missing;
+    const bool restarted = particleCloudIO::readStartTime
+    (
+        particles_, grid.mesh(), cloudName, missing
+    );
+    if (!restarted)
     {
         if (!dict.isDict("initialRegions"))
         {
@@ -454,25 +444,8 @@ void Foam::mpm3dFlow::particlesToGrid()
     particles_.sortByCell(g, schedule_.maxStale());
 
     // Work on the nodes the particles touch, and clear those of last step
-    const label n = particles_.size();
-    const double* x[3];
-    for (int d = 0; d < 3; ++d)
-    {
-        x[d] = particles_.column(particleArrays::X + d);
-    }
-    double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
-    #pragma omp parallel for schedule(static) \
-        reduction(min:lo[:3]) reduction(max:hi[:3])
-    for (label i = 0; i < n; ++i)
-    {
-        for (int d = 0; d < 3; ++d)
-        {
-            lo[d] = x[d][i] < lo[d] ? x[d][i] : lo[d];
-            hi[d] = x[d][i] > hi[d] ? x[d][i] : hi[d];
-        }
-    }
     activeNodes_ = stencilNodes_;
-    stencilNodes_ = n ? g.stencilBox(lo, hi) : nodeBox();
+    stencilNodes_ = particles_.stencilNodes(g);
     activeNodes_.unite(stencilNodes_);
     zeroNodes3D(g, activeNodes_, nodes_);
 
@@ -629,19 +602,9 @@ Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
 
 bool Foam::mpm3dFlow::finite() const
 {
-    const label nCols = particles_.nColumns();
-    const label n = particles_.size();
-    bool ok = true;
-    for (label c = 0; c < nCols && ok; ++c)
-    {
-        const double* a = particles_.column(c);
-        #pragma omp parallel for schedule(static) reduction(&&:ok)
-        for (label i = 0; i < n; ++i)
-        {
-            ok = ok && std::isfinite(a[i]);
-        }
-    }
-    return ok;
+    std::vector<label> all(particles_.nColumns());
+    std::iota(all.begin(), all.end(), 0);
+    return particles_.finite(all);
 }
 
 

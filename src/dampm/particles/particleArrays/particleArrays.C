@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleArrays.H"
+#include <cmath>
 #include "error.H"
 #include <algorithm>
 
@@ -215,6 +216,50 @@ void Foam::particleArrays::countCells(const label nCells)
     {
         cellStart_[c + 1] += cellStart_[c];
     }
+}
+
+
+Foam::nodeBox Foam::particleArrays::stencilNodes
+(
+    const gridGeometry& g
+) const
+{
+    if (!size_)
+    {
+        return nodeBox();
+    }
+    const double* pos[3] = {column(X), column(Y), column(Z)};
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    const label n = size_;
+    #pragma omp parallel for schedule(static) \
+        reduction(min:lo[:3]) reduction(max:hi[:3])
+    for (label i = 0; i < n; ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            const double xd = pos[d][i];
+            lo[d] = xd < lo[d] ? xd : lo[d];
+            hi[d] = xd > hi[d] ? xd : hi[d];
+        }
+    }
+    return g.stencilBox(lo, hi);
+}
+
+
+bool Foam::particleArrays::finite(const std::vector<label>& columns) const
+{
+    const label n = size_;
+    bool ok = true;
+    for (const label c : columns)
+    {
+        const double* v = column(c);
+        #pragma omp parallel for schedule(static) reduction(&&:ok)
+        for (label i = 0; i < n; ++i)
+        {
+            ok = ok && std::isfinite(v[i]);
+        }
+    }
+    return ok;
 }
 
 

@@ -335,4 +335,31 @@ bool Foam::particleCloudIO::writeObject
 }
 
 
+bool Foam::particleCloudIO::readStartTime
+(
+    particleArrays& particles,
+    const fvMesh& mesh,
+    const word& cloudName,
+    wordList& missing
+)
+{
+    const word timeName = mesh.time().timeName();
+    if (!found(mesh, cloudName, timeName))
+    {
+        return false;
+    }
+    missing = read(particles, mesh, cloudName, timeName);
+    Info<< "Read " << particles.size() << " particles of cloud " << cloudName
+        << " at time " << timeName << endl;
+    if (!missing.empty())
+    {
+        WarningInFunction
+            << "fields " << missing << " of cloud " << cloudName
+            << " are missing at time " << timeName
+            << ": started from their initial values" << endl;
+    }
+    return true;
+}
+
+
 // ************************************************************************* //
