@@ -23,6 +23,9 @@ Description
     (adjustTimeStep, maxCo, maxDeltaT); writes the particle cloud dampmCloud,
     the grid fields h, U, Z and the hazard maps at every write time, and
     postProcessing/dampmFoam/<startTime>/summary.dat every step.
+    With a handOff sub-dictionary it ends the run-out by itself, writing the
+    time for depthToParticles3D, at a set time or when the front comes
+    within a distance of the 3D region (handOff.H).
 
 \*---------------------------------------------------------------------------*/
 
@@ -32,6 +35,7 @@ Description
 #include "depthAveragedFlow.H"
 #include "particleCloudIO.H"
 #include "hazardMaps.H"
+#include "handOff.H"
 #include "timeSeriesFile.H"
 #include "stepTimers.H"
 
@@ -62,6 +66,7 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
 
         #include "setMPMDeltaT.H"
+        #include "limitHandOffDeltaT.H"
 
         ++runTime;
 
@@ -78,13 +83,32 @@ int main(int argc, char *argv[])
         {
             #include "writeOutput.H"
         });
-        if (runTime.writeTime())
+        if
+        (
+            handOff3D.due
+            (
+                runTime.value(), flow.particles(), flow.hField(),
+                flow.topography()
+            )
+        )
+        {
+            Info<< nl << "Hand-off to the 3D stage at t = "
+                << runTime.timeName() << " s: " << handOff3D.reason().c_str()
+                << nl << endl;
+            #include "writeFields.H"
+            timers.run(stepTimers::IO, [&]{ runTime.writeAndEnd(); });
+        }
+        else if (runTime.writeTime())
         {
             #include "writeFields.H"
             timers.run(stepTimers::IO, [&]{ runTime.write(); });
         }
     }
 
+    if (handOff3D.reason().empty())
+    {
+        handOff3D.reportNotDue(Info);
+    }
     timers.report(Info);
     Info<< "End\n" << endl;
 

@@ -43,6 +43,8 @@ Foam::barrierModel::barrierModel
     friction_(0),
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
+    contactTop_(-GREAT),
+    maxContactTop_(-GREAT),
     passLevel_(GREAT),
     force_(Zero),
     peakForce_(0),
@@ -100,6 +102,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
 
     // One plane of nodes at a time: bounded memory for big grids
     nodes_.clear();
+    nodeZ_.clear();
     for (int d = 0; d < 3; ++d)
     {
         normal_[d].clear();
@@ -137,6 +140,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
             if (phi[pi] <= onSurface && phi[pi] >= -band)
             {
                 nodes_.push_back(ids[pi]);
+                nodeZ_.push_back(pts[pi].z());
                 for (int d = 0; d < 3; ++d)
                 {
                     normal_[d].push_back(nrm[pi][d]);
@@ -186,11 +190,13 @@ void Foam::barrierModel::applyContact
     const double* ny = normal_[1].data();
     const double* nz = normal_[2].data();
     double* fn = normalForce_.data();
+    const double* z = nodeZ_.data();
     const contactType contact = contact_;
     const double mu = friction_;
-    double Fx = 0, Fy = 0, Fz = 0;
+    double Fx = 0, Fy = 0, Fz = 0, top = -GREAT;
 
-    #pragma omp parallel for schedule(static) reduction(+:Fx, Fy, Fz)
+    #pragma omp parallel for schedule(static) reduction(+:Fx, Fy, Fz) \
+        reduction(max:top)
     for (label c = 0; c < nc; ++c)
     {
         const gridGeometry::index n = nodes[c];
@@ -227,12 +233,15 @@ void Foam::barrierModel::applyContact
         Fy += k*(v[1] - vt[1]);
         Fz += k*(v[2] - vt[2]);
         fn[c] = -k*vn;
+        top = z[c] > top ? z[c] : top;
         grid.vx[n] = vt[0];
         grid.vy[n] = vt[1];
         grid.vz[n] = vt[2];
     }
 
     force_ = vector(Fx, Fy, Fz);
+    contactTop_ = top;
+    maxContactTop_ = max(maxContactTop_, top);
     if (mag(force_) > peakForce_)
     {
         peakForce_ = mag(force_);

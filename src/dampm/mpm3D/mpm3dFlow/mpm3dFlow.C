@@ -231,7 +231,8 @@ Foam::mpm3dFlow::mpm3dFlow
 (
     const mpmGrid& grid,
     const dictionary& dict,
-    const vector& g
+    const vector& g,
+    const particleSource source
 )
 :
     grid_(grid),
@@ -314,6 +315,11 @@ Foam::mpm3dFlow::mpm3dFlow
     material_->addFields(particles_);
 
     nodes_.resize(grid.geometry().nNodes());
+
+    if (source == particleSource::none)
+    {
+        return;
+    }
 
     // The particles: the cloud of the start time, or the initial regions
     const Time& runTime = grid.mesh().time();
@@ -548,15 +554,18 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
     const double* m = particles_.column(particleArrays::M);
     const double g[3] = {settings_.g[0], settings_.g[1], settings_.g[2]};
 
-    double mass = 0, ke = 0, pe = 0, maxU2 = 0;
+    double mass = 0, ke = 0, pe = 0, maxU2 = 0, px = 0, py = 0, pz = 0;
     double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
-    #pragma omp parallel for schedule(static) reduction(+:mass, ke, pe) \
-        reduction(max:maxU2) reduction(min:lo[:3]) reduction(max:hi[:3])
+    #pragma omp parallel for schedule(static) \
+        reduction(+:mass, ke, pe, px, py, pz) reduction(max:maxU2) reduction(min:lo[:3]) reduction(max:hi[:3])
     for (label i = 0; i < n; ++i)
     {
         const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
         mass += m[i];
         ke += 0.5*m[i]*u2;
+        px += m[i]*u[0][i];
+        py += m[i]*u[1][i];
+        pz += m[i]*u[2][i];
         pe -= m[i]*(g[0]*x[0][i] + g[1]*x[1][i] + g[2]*x[2][i]);
         maxU2 = u2 > maxU2 ? u2 : maxU2;
         for (int d = 0; d < 3; ++d)
@@ -571,6 +580,7 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
     t.kineticEnergy = ke;
     t.potentialEnergy = pe;
     t.maxSpeed = std::sqrt(maxU2);
+    t.momentum = vector(px, py, pz);
     t.extent = n
         ? boundBox(point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2]))
         : boundBox(point::zero, point::zero);

@@ -19,14 +19,19 @@ Foam::timeSeriesFile::timeSeriesFile
     const word& name,
     const word& file,
     const wordList& columns,
-    const wordList& description
+    const wordList& description,
+    const word& timeName
 )
 :
     columns_(columns)
 {
     const fileName dir =
         runTime.globalPath()/"postProcessing"/name
-       /runTime.timeName(runTime.startTime().value());
+       /(
+            timeName.empty()
+          ? runTime.timeName(runTime.startTime().value())
+          : timeName
+        );
     mkDir(dir);
     os_.reset(new OFstream(dir/(file + ".dat")));
     os_->precision(16);

@@ -78,4 +78,13 @@ void Foam::rheologyModels::NewtonianRheology::describe(Ostream& os) const
 }
 
 
+Foam::yieldViscosity
+Foam::rheologyModels::NewtonianRheology::viscosityLaw() const
+{
+    dictionary coeffs;
+    coeffs.add("mu", mu_);
+    return yieldViscosity(coeffs, yieldViscosity::lawType::Newtonian);
+}
+
+
 // ************************************************************************* //

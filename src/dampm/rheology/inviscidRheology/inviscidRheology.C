@@ -51,4 +51,13 @@ void Foam::rheologyModels::inviscidRheology::describe(Ostream& os) const
 }
 
 
+Foam::yieldViscosity
+Foam::rheologyModels::inviscidRheology::viscosityLaw() const
+{
+    dictionary coeffs;
+    coeffs.add("mu", 0.0);
+    return yieldViscosity(coeffs, yieldViscosity::lawType::Newtonian);
+}
+
+
 // ************************************************************************* //

@@ -113,6 +113,35 @@ double Foam::yieldViscosity::maxViscosity() const
 }
 
 
+bool Foam::yieldViscosity::sameAs
+(
+    const yieldViscosity& other,
+    const double relTol
+) const
+{
+    auto same = [relTol](const double a, const double b)
+    {
+        return std::abs(a - b) <= relTol*Foam::max(std::abs(a), std::abs(b));
+    };
+    if (!same(k_, other.k_) || !same(n_, other.n_))
+    {
+        return false;
+    }
+    if (!same(tauY_, other.tauY_))
+    {
+        return false;
+    }
+    if (tauY_ == 0)
+    {
+        return true;
+    }
+    return
+        regularisation_ == other.regularisation_
+     && same(m_, other.m_)
+     && same(muMax_, other.muMax_);
+}
+
+
 void Foam::yieldViscosity::describe(Ostream& os) const
 {
     if (law_ == lawType::HerschelBulkley)

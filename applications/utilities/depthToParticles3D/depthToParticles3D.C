@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Application
+    depthToParticles3D
+
+Group
+    grpMPMUtilities
+
+Description
+    Turns the columns of a depth-averaged dampmFoam case into the initial
+    3D particles of this mpm3dFoam case (the paper's section 4): run from
+    the 3D case, like mapFields,
+
+    \verbatim
+        depthToParticles3D ../runOut [-sourceTime 3] [-profile Bagnold]
+    \endverbatim
+
+    - reads the columns at the source time (default: the latest), the
+      3D case's mesh, material, barriers and ground;
+    - refuses, with the reason, cases whose gravity, material or terrain
+      disagree, a missing case or time, no column inside the 3D mesh, and
+      particles that would start inside a barrier;
+    - converts the columns whose footprint lies inside the 3D mesh
+      (columnsTo3D: mass, volume, horizontal momentum and its kinetic
+      energy kept to round-off; hydrostatic stress), and counts the others;
+    - writes the particles as the cloud mpm3dCloud of this case at the
+      source time (the same time name), so that mpm3dFoam (startFrom
+      latestTime) carries on the physical time, and the totals to
+      postProcessing/depthToParticles3D/<time>/conversion.dat.
+
+    The ground of the 3D case is the highest of its terrain barriers, or
+    else its mesh bottom if that is a wall.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "mpmGrid.H"
+#include "depthAveragedFlow.H"
+#include "mpm3dFlow.H"
+#include "terrainBarrier.H"
+#include "columnsTo3D.H"
+#include "particleCloudIO.H"
+#include "timeSeriesFile.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Turn the columns of a depth-averaged dampmFoam case into the"
+        " initial 3D particles of this mpm3dFoam case"
+    );
+    argList::noParallel();
+    argList::addArgument("sourceCase", "The dampmFoam case");
+    argList::addOption
+    (
+        "sourceTime",
+        "time",
+        "Time of the columns: a time or latestTime (default)"
+    );
+    argList::addOption
+    (
+        "profile",
+        "uniform|Bagnold",
+        "Vertical profile of the horizontal velocity (default: uniform)"
+    );
+    argList::addOption
+    (
+        "terrainTolerance",
+        "m",
+        "Largest difference of the two cases' terrain under the converted"
+        " columns (default: a quarter of the 3D cell height)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    #include "createSourceCase.H"
+    #include "create3DCase.H"
+    #include "checkCases.H"
+
+    const word profile = args.getOrDefault<word>("profile", "uniform");
+    if (!columnsTo3D::profileNames.found(profile))
+    {
+        FatalErrorInFunction
+            << "-profile " << profile << " is invalid; allowed: "
+            << columnsTo3D::profileNames.sortedToc() << exit(FatalError);
+    }
+    columnsTo3D conversion
+    (
+        mesh.bounds(),
+        spacing,
+        flow3D.material(),
+        mag(g.value()),
+        columnsTo3D::profileNames[profile],
+        ground
+    );
+    particleArrays particles3D(flow3D.particles());
+    std::vector<char> converted;
+    const columnsTo3D::totals totals =
+        conversion.convert(columns.particles(), particles3D, &converted);
+
+    #include "checkConversion.H"
+
+    columnsTo3D::report(totals, Info);
+
+    #include "writeConversion.H"
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
