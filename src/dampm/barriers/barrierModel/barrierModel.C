@@ -43,8 +43,8 @@ Foam::barrierModel::barrierModel
     friction_(0),
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
-    contactTop_(-GREAT),
-    maxContactTop_(-GREAT),
+    runUp_(-GREAT),
+    maxRunUp_(-GREAT),
     passLevel_(GREAT),
     force_(Zero),
     peakForce_(0),
@@ -102,7 +102,8 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
 
     // One plane of nodes at a time: bounded memory for big grids
     nodes_.clear();
-    nodeZ_.clear();
+    nearNodes_.clear();
+    nearZ_.clear();
     for (int d = 0; d < 3; ++d)
     {
         normal_[d].clear();
@@ -140,11 +141,15 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
             if (phi[pi] <= onSurface && phi[pi] >= -band)
             {
                 nodes_.push_back(ids[pi]);
-                nodeZ_.push_back(pts[pi].z());
                 for (int d = 0; d < 3; ++d)
                 {
                     normal_[d].push_back(nrm[pi][d]);
                 }
+            }
+            else if (phi[pi] > onSurface && phi[pi] <= 1.5*h)
+            {
+                nearNodes_.push_back(ids[pi]);
+                nearZ_.push_back(pts[pi].z());
             }
         }
     }
@@ -190,13 +195,11 @@ void Foam::barrierModel::applyContact
     const double* ny = normal_[1].data();
     const double* nz = normal_[2].data();
     double* fn = normalForce_.data();
-    const double* z = nodeZ_.data();
     const contactType contact = contact_;
     const double mu = friction_;
-    double Fx = 0, Fy = 0, Fz = 0, top = -GREAT;
+    double Fx = 0, Fy = 0, Fz = 0;
 
-    #pragma omp parallel for schedule(static) reduction(+:Fx, Fy, Fz) \
-        reduction(max:top)
+    #pragma omp parallel for schedule(static) reduction(+:Fx, Fy, Fz)
     for (label c = 0; c < nc; ++c)
     {
         const gridGeometry::index n = nodes[c];
@@ -233,15 +236,28 @@ void Foam::barrierModel::applyContact
         Fy += k*(v[1] - vt[1]);
         Fz += k*(v[2] - vt[2]);
         fn[c] = -k*vn;
-        top = z[c] > top ? z[c] : top;
         grid.vx[n] = vt[0];
         grid.vy[n] = vt[1];
         grid.vz[n] = vt[2];
     }
 
     force_ = vector(Fx, Fy, Fz);
-    contactTop_ = top;
-    maxContactTop_ = max(maxContactTop_, top);
+
+    // Run-up: the highest node beside the barrier holding flow
+    const label nn = label(nearNodes_.size());
+    const gridGeometry::index* near = nearNodes_.data();
+    const double* z = nearZ_.data();
+    double top = -GREAT;
+    #pragma omp parallel for schedule(static) reduction(max:top)
+    for (label c = 0; c < nn; ++c)
+    {
+        if (grid.mass[near[c]] > massTol && z[c] > top)
+        {
+            top = z[c];
+        }
+    }
+    runUp_ = top;
+    maxRunUp_ = max(maxRunUp_, top);
     if (mag(force_) > peakForce_)
     {
         peakForce_ = mag(force_);
