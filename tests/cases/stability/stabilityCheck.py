@@ -216,3 +216,16 @@ def identicalFiles(runA, runB, time, names, solver="dampmFoam"):
         a = open(os.path.join(runA, base, name)).read()
         b = open(os.path.join(runB, base, name)).read()
         check(a == b, "%s and %s: %s/%s identical, byte for byte" % (runA, runB, base, name))
+
+
+def checkHorizontalSpeed(run, bound, what, solver="dampmFoam"):
+    """The largest horizontal particle speed at every write time is at most
+    bound [m/s] (the cloud's U; dampmFoam writes U with the vertical
+    component along the bed, which is dropped here)."""
+    worst = 0.0
+    for t in times(run, solver):
+        U = cloud(run, t, "U", solver)
+        worst = max(worst, float(np.max(np.hypot(U[:, 0], U[:, 1]))) if len(U) else 0.0)
+    checkBelow([worst], bound, "%s: horizontal speed [m/s] at all %d write times, %s"
+               % (run, len(times(run, solver)), what))
+    return worst
