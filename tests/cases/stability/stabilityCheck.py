@@ -162,18 +162,20 @@ def checkNoCreep(run, t1, t2, tol, solver="dampmFoam"):
           % (run, t1, t2, d, tol))
 
 
-def checkCourant(run=".", solver="dampmFoam", start="0", dx=None, maxCo=0.4, slack=1e-9):
-    """Every step kept maxSpeed deltaT / dx <= maxCo, the kinematic part of
-    the Courant limit (the wave part adds to the speed, so this is
-    necessary); returns the largest."""
+def checkCourant(run=".", solver="dampmFoam", start="0", dx=None, maxCo=0.4, waveSpeed=0.0, slack=1e-9):
+    """Every step kept (maxSpeed + waveSpeed) deltaT / dx <= maxCo: with
+    waveSpeed 0 the kinematic part of the Courant limit (dampmFoam's wave
+    part sqrt(g h) adds to the speed, so this is necessary), with the
+    material's constant wave speed mpm3dFoam's limit itself; returns the
+    largest."""
     s = summary(run, solver, start)
-    co = s["maxSpeed"] * s["deltaT"] / dx
+    co = (s["maxSpeed"] + waveSpeed) * s["deltaT"] / dx
     # the speed is that after the step, the step was set from before it: a
     # step may raise the speed by g deltaT (gravity), so allow one step's
     # gravity in the Courant number
     allowed = maxCo * (1 + slack) + g * s["deltaT"] ** 2 / dx
-    check(np.all(co <= allowed), "%s: maxSpeed deltaT/dx <= maxCo %.3g at every step (largest %.4g)"
-          % (run, maxCo, np.max(co)))
+    check(np.all(co <= allowed), "%s: (maxSpeed + %g m/s) deltaT/dx <= maxCo %.3g at every step (largest %.4g)"
+          % (run, waveSpeed, maxCo, np.max(co)))
     return np.max(co)
 
 
