@@ -173,8 +173,8 @@ def checkCourant(run=".", solver="dampmFoam", start="0", dx=None, maxCo=0.4, wav
     s = summary(run, solver, start)
     co = (s["maxSpeed"][:-1] + waveSpeed) * s["deltaT"][1:] / dx
     largest = np.max(co) if co.size else 0.0
-    check(np.all(co <= maxCo * (1 + slack)), "%s: (maxSpeed + %g m/s) deltaT/dx <= maxCo %.3g at every step (largest %.6g)"
-          % (run, waveSpeed, maxCo, largest))
+    check(np.all(co <= maxCo * (1 + slack)), "%s: (maxSpeed + %g m/s) deltaT/dx <= maxCo %.3g (+%.3g) at every step (largest %.6g)"
+          % (run, waveSpeed, maxCo, slack, largest))
     return largest
 
 
