@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "barrierModel.H"
+#include "orderedSums.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -197,10 +198,9 @@ void Foam::barrierModel::applyContact
     double* fn = normalForce_.data();
     const contactType contact = contact_;
     const double mu = friction_;
-    double Fx = 0, Fy = 0, Fz = 0;
-
-    #pragma omp parallel for schedule(static) reduction(+:Fx, Fy, Fz)
-    for (label c = 0; c < nc; ++c)
+    // Force summed in a fixed order: the same on any number of threads
+    double F[3], none[1];
+    orderedSums<3, 0>(nc, F, none, [&](label c, double* S, double*)
     {
         const gridGeometry::index n = nodes[c];
         const double mi = grid.mass[n];
@@ -209,7 +209,7 @@ void Foam::barrierModel::applyContact
         if (!(mi > massTol) || vn >= 0)
         {
             fn[c] = 0;
-            continue;
+            return;
         }
         // Tangential velocity kept, removed or reduced by friction
         double vt[3] =
@@ -232,16 +232,16 @@ void Foam::barrierModel::applyContact
             vt[d] *= keep;
         }
         const double k = mi/dt;
-        Fx += k*(v[0] - vt[0]);
-        Fy += k*(v[1] - vt[1]);
-        Fz += k*(v[2] - vt[2]);
+        S[0] += k*(v[0] - vt[0]);
+        S[1] += k*(v[1] - vt[1]);
+        S[2] += k*(v[2] - vt[2]);
         fn[c] = -k*vn;
         grid.vx[n] = vt[0];
         grid.vy[n] = vt[1];
         grid.vz[n] = vt[2];
-    }
+    });
 
-    force_ = vector(Fx, Fy, Fz);
+    force_ = vector(F[0], F[1], F[2]);
 
     // Run-up: the highest node beside the barrier holding flow
     const label nn = label(nearNodes_.size());

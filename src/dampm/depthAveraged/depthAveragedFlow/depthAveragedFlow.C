@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedFlow.H"
+#include "orderedSums.H"
 #include "visitShape.H"
 #include "transfers.H"
 #include "particleCloudIO.H"
@@ -888,50 +889,33 @@ void Foam::depthAveragedFlow::diagnostics
     const double* gx = particles_.column(gradZ_);
     const double* gy = particles_.column(gradZ_ + 1);
 
-    // Sums over fixed blocks of particles, added in block order: the same
-    // rounding on any number of threads (min and max are exact anyway)
-    const label blockSize = 1024;
-    const label nBlocks = (n + blockSize - 1)/blockSize;
-    blockSums_.resize(2*nBlocks);
-    double* sums = blockSums_.data();
-    double vMax = 0;
-    double xMin = GREAT, xMax = -GREAT, yMin = GREAT, yMax = -GREAT;
-    #pragma omp parallel for schedule(static) \
-        reduction(max:vMax, xMax, yMax) reduction(min:xMin, yMin)
-    for (label b = 0; b < nBlocks; ++b)
+    // The same rounding on any number of threads
+    double sums[2], maxima[5];
+    orderedSums<2, 5>(n, sums, maxima, [&](label i, double* S, double* mx)
     {
-        double M = 0, KE = 0;
-        const label last = min((b + 1)*blockSize, n);
-        for (label i = b*blockSize; i < last; ++i)
+        // Speed along the bed: the vertical component follows the terrain
+        const double w = ux[i]*gx[i] + uy[i]*gy[i];
+        const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
+        S[0] += m[i];
+        S[1] += 0.5*m[i]*v2;
+        const double v[5] = {v2, -x[i], x[i], -y[i], y[i]};
+        for (int k = 0; k < 5; ++k)
         {
-            // Speed along the bed: the vertical component follows the
-            // terrain
-            const double w = ux[i]*gx[i] + uy[i]*gy[i];
-            const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
-            M += m[i];
-            KE += 0.5*m[i]*v2;
-            vMax = v2 > vMax ? v2 : vMax;
-            xMin = x[i] < xMin ? x[i] : xMin;
-            xMax = x[i] > xMax ? x[i] : xMax;
-            yMin = y[i] < yMin ? y[i] : yMin;
-            yMax = y[i] > yMax ? y[i] : yMax;
+            mx[k] = v[k] > mx[k] ? v[k] : mx[k];
         }
-        sums[2*b] = M;
-        sums[2*b + 1] = KE;
-    }
-    double M = 0, KE = 0;
-    for (label b = 0; b < nBlocks; ++b)
-    {
-        M += sums[2*b];
-        KE += sums[2*b + 1];
-    }
-    mass = M;
-    kineticEnergy = KE;
-    maxSpeed = std::sqrt(vMax);
+    });
+    mass = sums[0];
+    kineticEnergy = sums[1];
+    maxSpeed = std::sqrt(max(maxima[0], 0.0));
     extent = n
-        ? boundBox(point(xMin, yMin, 0), point(xMax, yMax, 0))
+        ? boundBox
+          (
+              point(-maxima[1], -maxima[3], 0),
+              point(maxima[2], maxima[4], 0)
+          )
         : boundBox(point::zero, point::zero);
 }
+
 
 
 bool Foam::depthAveragedFlow::finite() const
