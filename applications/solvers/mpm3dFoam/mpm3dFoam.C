@@ -26,6 +26,9 @@ Description
     postProcessing/mpm3dFoam/<startTime>/summary.dat and energy.dat and, for
     every barrier, postProcessing/<barrier>/<startTime>/force.dat (and
     overtopping.dat when it measures overtopping).
+    Started from a conversion (depthToParticles3D), it keeps accumulating
+    the run-out's hazard maps on its grid (runOutMaps):
+    postProcessing/hazardMaps/<time>/ cover the whole event.
 
 \*---------------------------------------------------------------------------*/
 
@@ -36,6 +39,7 @@ Description
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"
 #include "stepTimers.H"
+#include "runOutMaps.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -74,6 +78,14 @@ int main(int argc, char *argv[])
         });
         timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
         timers.countStep(flow.particles().size());
+
+        if (eventMaps)
+        {
+            timers.run(stepTimers::IO, [&]
+            {
+                eventMaps->update(flow.particles());
+            });
+        }
 
         timers.run(stepTimers::IO, [&]
         {

@@ -32,7 +32,9 @@ Description
     - writes the particles as the cloud mpm3dCloud of this case at the
       source time (the same time name), so that mpm3dFoam (startFrom
       latestTime) carries on the physical time, and the totals to
-      postProcessing/depthToParticles3D/<time>/conversion.dat.
+      postProcessing/depthToParticles3D/<time>/conversion.dat, and the
+      run-out's name and time (uniform/runOutMaps), with which mpm3dFoam
+      continues the run-out's hazard maps.
 
     The ground of the 3D case is the highest of its terrain barriers, or
     else its mesh bottom if that is a wall.
@@ -47,6 +49,7 @@ Description
 #include "columnsTo3D.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"
+#include "runOutMaps.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -172,12 +172,50 @@ void Foam::hazardMaps::write()
     }
 
     const Time& runTime = grid_.mesh().time();
-    const fileName dir =
-        runTime.globalPath()/"postProcessing"/"hazardMaps"/runTime.timeName();
+    writeRasters
+    (
+        runTime.globalPath()/"postProcessing"/"hazardMaps"/runTime.timeName()
+    );
+}
+
+
+void Foam::hazardMaps::writeRasters(const fileName& dir) const
+{
     mkDir(dir);
+    writeRaster(dir, "maxHeight", maxHeight_);
+    writeRaster(dir, "maxSpeed", maxSpeed_);
+    writeRaster(dir, "maxIntensity", maxIntensity_);
+}
+
+
+void Foam::hazardMaps::saveMaxima(dictionary& dict) const
+{
+    dict.set("maxHeight", scalarList(maxHeight_.begin(), maxHeight_.end()));
+    dict.set("maxSpeed", scalarList(maxSpeed_.begin(), maxSpeed_.end()));
+    dict.set
+    (
+        "maxIntensity",
+        scalarList(maxIntensity_.begin(), maxIntensity_.end())
+    );
+}
+
+
+void Foam::hazardMaps::loadMaxima(const dictionary& dict)
+{
+    std::vector<double>* maxima[3] =
+        {&maxHeight_, &maxSpeed_, &maxIntensity_};
+    const word names[3] = {"maxHeight", "maxSpeed", "maxIntensity"};
     for (int k = 0; k < 3; ++k)
     {
-        writeRaster(dir, fields_[k]->name(), *maxima[k]);
+        const scalarList values(dict.get<scalarList>(names[k]));
+        if (values.size() != label(maxima[k]->size()))
+        {
+            FatalIOErrorInFunction(dict)
+                << names[k] << " has " << values.size() << " values; the"
+                << " run-out grid has " << maxima[k]->size() << " nodes"
+                << exit(FatalIOError);
+        }
+        std::copy(values.begin(), values.end(), maxima[k]->begin());
     }
 }
 

@@ -1,0 +1,283 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "runOutMaps.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::runOutMaps::dictName("runOutMaps");
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::runOutMaps::runOutMaps
+(
+    const fileName& sourceCase,
+    const word& sourceTime
+)
+:
+    sourceCase_(sourceCase),
+    sourceTime_(sourceTime)
+{
+    if (!isFile(sourceCase_/"system"/"controlDict"))
+    {
+        FatalErrorInFunction
+            << "the run-out case " << sourceCase_ << " of the hazard maps is"
+            << " missing (no system/controlDict)" << exit(FatalError);
+    }
+    runTime_.reset
+    (
+        new Time
+        (
+            Time::controlDictName,
+            sourceCase_.path(),
+            fileName(sourceCase_.name())
+        )
+    );
+    runTime_->setTime(instant(readScalar(sourceTime_), sourceTime_), 0);
+    mesh_.reset
+    (
+        new fvMesh
+        (
+            IOobject
+            (
+                fvMesh::defaultRegion,
+                runTime_->timeName(),
+                *runTime_,
+                IOobject::MUST_READ
+            )
+        )
+    );
+    grid_.reset(new mpmGrid(*mesh_));
+
+    const IOdictionary props
+    (
+        IOobject
+        (
+            "dampmProperties",
+            runTime_->constant(),
+            *mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    topography_ = topographyModel::New(props, sourceCase_);
+
+    const gridGeometry& g = grid_->geometry();
+    nodes_.resize(g.nNodes());
+    topography_->sampleNodes(g, nodes_.Z.data());
+    for (std::vector<double>* a : {&mass_, &px_, &py_, &volume_})
+    {
+        a->assign(g.nNodes(), 0.0);
+    }
+    active_.lo[0] = active_.lo[1] = active_.hi[0] = active_.hi[1] = 0;
+
+    // The run-out's maps of the hand-off time (point fields there)
+    maps_.reset(new hazardMaps(*grid_, *topography_, nodes_.Z.data()));
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
+{
+    const IOobject io
+    (
+        dictName,
+        runTime3D.timeName(),
+        "uniform",
+        runTime3D,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!isFile(io.objectPath()))
+    {
+        return nullptr;
+    }
+    const IOdictionary dict(io);
+    autoPtr<runOutMaps> maps
+    (
+        new runOutMaps
+        (
+            dict.get<fileName>("sourceCase"),
+            word(dict.get<string>("sourceTime"))
+        )
+    );
+    if (dict.found("maxHeight"))
+    {
+        maps->maps_->loadMaxima(dict);
+    }
+    Info<< "Hazard maps: continuing those of the run-out "
+        << maps->sourceCase_ << " (time " << maps->sourceTime_
+        << ") on its grid" << nl << endl;
+    return maps;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::runOutMaps::writeSource
+(
+    const Time& runTime3D,
+    const fileName& sourceCase,
+    const word& sourceTime
+)
+{
+    IOdictionary dict
+    (
+        IOobject
+        (
+            dictName,
+            runTime3D.timeName(),
+            "uniform",
+            runTime3D,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    dict.set("sourceCase", sourceCase);
+    dict.set("sourceTime", string(sourceTime));
+    dict.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
+void Foam::runOutMaps::update(const particleArrays& particles)
+{
+    const gridGeometry& g = grid_->geometry();
+
+    // Clear the nodes of the last projection
+    g.forEachNodeRow(active_, [&](const label first, const label last)
+    {
+        for (label i = first; i < last; ++i)
+        {
+            mass_[i] = px_[i] = py_[i] = volume_[i] = 0;
+            nodes_.h[i] = nodes_.vx[i] = nodes_.vy[i] = 0;
+        }
+    });
+
+    // Bilinear scatter (serial: once per step onto a 2D grid)
+    const label n = particles.size();
+    const double* x = particles.column(particleArrays::X);
+    const double* y = particles.column(particleArrays::Y);
+    const double* ux = particles.column(particleArrays::UX);
+    const double* uy = particles.column(particleArrays::UY);
+    const double* m = particles.column(particleArrays::M);
+    const double* V = particles.column(particleArrays::VOL);
+    int32_t lo[2] = {g.nCells[0], g.nCells[1]}, hi[2] = {0, 0};
+    for (label p = 0; p < n; ++p)
+    {
+        const double xi = g.local(0, x[p]), eta = g.local(1, y[p]);
+        if (!(xi >= 0 && xi <= g.nCells[0] && eta >= 0 && eta <= g.nCells[1]))
+        {
+            continue;
+        }
+        const int32_t i = std::min(int32_t(xi), g.nCells[0] - 1);
+        const int32_t j = std::min(int32_t(eta), g.nCells[1] - 1);
+        const double fx = xi - i, fy = eta - j;
+        const double w[4] =
+            {(1 - fx)*(1 - fy), fx*(1 - fy), (1 - fx)*fy, fx*fy};
+        for (int c = 0; c < 4; ++c)
+        {
+            const label node = g.nodeIndex(i + (c & 1), j + (c >> 1), 0);
+            mass_[node] += w[c]*m[p];
+            px_[node] += w[c]*m[p]*ux[p];
+            py_[node] += w[c]*m[p]*uy[p];
+            volume_[node] += w[c]*V[p];
+        }
+        lo[0] = std::min(lo[0], i);
+        lo[1] = std::min(lo[1], j);
+        hi[0] = std::max(hi[0], i + 2);
+        hi[1] = std::max(hi[1], j + 2);
+    }
+
+    active_ = nodeBox();
+    if (hi[0] <= lo[0])
+    {
+        return;
+    }
+    for (int d = 0; d < 2; ++d)
+    {
+        active_.lo[d] = lo[d] + gridGeometry::nGhost;
+        active_.hi[d] = hi[d] + gridGeometry::nGhost;
+    }
+    active_.lo[2] = 0;
+    active_.hi[2] = 1;
+
+    // Depth and velocity; boundary nodes own half a cell per side
+    const double cellArea = g.dx[0]*g.dx[1];
+    g.forEachNodeRow(active_, [&](const label first, const label last)
+    {
+        for (label k = first; k < last; ++k)
+        {
+            if (!(mass_[k] > 0))
+            {
+                continue;
+            }
+            gridGeometry::index ijk[3];
+            g.nodeIJK(k, ijk);
+            double area = cellArea;
+            for (int d = 0; d < 2; ++d)
+            {
+                if (ijk[d] == 0 || ijk[d] == g.nCells[d])
+                {
+                    area *= 0.5;
+                }
+            }
+            nodes_.h[k] = volume_[k]/area;
+            nodes_.vx[k] = px_[k]/mass_[k];
+            nodes_.vy[k] = py_[k]/mass_[k];
+        }
+    });
+    maps_->update(nodes_, active_);
+}
+
+
+void Foam::runOutMaps::write(const Time& runTime3D) const
+{
+    maps_->writeRasters
+    (
+        runTime3D.globalPath()/"postProcessing"/"hazardMaps"
+       /runTime3D.timeName()
+    );
+    IOdictionary dict
+    (
+        IOobject
+        (
+            dictName,
+            runTime3D.timeName(),
+            "uniform",
+            runTime3D,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    dict.set("sourceCase", sourceCase_);
+    dict.set("sourceTime", string(sourceTime_));
+    maps_->saveMaxima(dict);
+    dict.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
+// ************************************************************************* //
