@@ -13,6 +13,7 @@ License
 #include "particleCloudIO.H"
 #include "Time.H"
 #include <numeric>
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -272,6 +273,19 @@ Foam::mpm3dFlow::mpm3dFlow
     }
     settings_.rho0 = material_->rho();
     settings_.smoothJ = material_->volumetricSmoothing();
+    {
+        const char* e = std::getenv("DAMPM_SMOOTH");
+        if (e)
+        {
+            const std::string m(e);
+            settings_.smoothJ = m.find('i') != std::string::npos;
+            settings_.smoothP = m.find('p') != std::string::npos;
+        }
+        else
+        {
+            settings_.smoothP = settings_.smoothJ;
+        }
+    }
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
     if (!(settings_.flipRatio >= 0 && settings_.flipRatio <= 1))
@@ -455,6 +469,19 @@ void Foam::mpm3dFlow::particlesToGrid()
         *shape_,
         [&](const auto& kernel)
         {
+            if (settings_.smoothJ || settings_.smoothP)
+            {
+                pressureToGrid3D
+                (
+                    g, schedule_, kernel, stencilNodes_,
+                    particles_.cellStart().data(), view, nodes_
+                );
+                foldWalls
+                (
+                    g, stencilNodes_, settings_.wall,
+                    {nodes_.vol.data(), nodes_.pV.data()}, {}
+                );
+            }
             particlesToGrid3D
             (
                 g, schedule_, kernel, stencilNodes_,
@@ -528,6 +555,22 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
         [&](const auto& kernel)
         {
             gridToParticles3D(g, kernel, settings_, dt, nodes_, view);
+            if (settings_.smoothJ)
+            {
+                volumeChangeToGrid3D
+                (
+                    g, schedule_, kernel, stencilNodes_,
+                    particles_.cellStart().data(), view, nodes_
+                );
+                foldWalls
+                (
+                    g, stencilNodes_, settings_.wall, {nodes_.dVol.data()}, {}
+                );
+                volumeChangeToParticles3D
+                (
+                    g, kernel, settings_, dt, nodes_, view
+                );
+            }
         }
     );
     material_->updateStress(particles_, materialView(), dt);
@@ -597,6 +640,30 @@ Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
         passed += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
     }
     return passed + bar.passedOutflow();
+}
+
+
+void Foam::mpm3dFlow::smoothPressure()
+{
+    if (!settings_.smoothP)
+    {
+        return;
+    }
+    const gridGeometry& g = grid_.geometry();
+    const mpm3DParticles view = kernelView();
+    const nodeBox box = particles_.stencilNodes(g);
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            nodalPressure3D
+            (
+                g, kernel, box, settings_.wall, view,
+                particles_.column(p_), nodes_
+            );
+        }
+    );
 }
 
 
