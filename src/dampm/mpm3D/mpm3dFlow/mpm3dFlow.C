@@ -13,7 +13,6 @@ License
 #include "particleCloudIO.H"
 #include "Time.H"
 #include <numeric>
-#include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -273,19 +272,6 @@ Foam::mpm3dFlow::mpm3dFlow
     }
     settings_.rho0 = material_->rho();
     settings_.smoothJ = material_->volumetricSmoothing();
-    {
-        const char* e = std::getenv("DAMPM_SMOOTH");
-        if (e)
-        {
-            const std::string m(e);
-            settings_.smoothJ = m.find('i') != std::string::npos;
-            settings_.smoothP = m.find('p') != std::string::npos;
-        }
-        else
-        {
-            settings_.smoothP = settings_.smoothJ;
-        }
-    }
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
     if (!(settings_.flipRatio >= 0 && settings_.flipRatio <= 1))
@@ -469,7 +455,7 @@ void Foam::mpm3dFlow::particlesToGrid()
         *shape_,
         [&](const auto& kernel)
         {
-            if (settings_.smoothJ || settings_.smoothP)
+            if (settings_.smoothJ)
             {
                 pressureToGrid3D
                 (
@@ -645,7 +631,7 @@ Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
 
 void Foam::mpm3dFlow::smoothPressure()
 {
-    if (!settings_.smoothP)
+    if (!settings_.smoothJ)
     {
         return;
     }
