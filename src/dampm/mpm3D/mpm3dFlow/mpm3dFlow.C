@@ -461,6 +461,19 @@ void Foam::mpm3dFlow::particlesToGrid()
         *shape_,
         [&](const auto& kernel)
         {
+            if (settings_.smoothJ)
+            {
+                pressureToGrid3D
+                (
+                    g, schedule_, kernel, stencilNodes_,
+                    particles_.cellStart().data(), view, nodes_
+                );
+                foldWalls
+                (
+                    g, stencilNodes_, settings_.wall,
+                    {nodes_.vol.data(), nodes_.pV.data()}, {}
+                );
+            }
             particlesToGrid3D
             (
                 g, schedule_, kernel, stencilNodes_,
@@ -534,6 +547,22 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
         [&](const auto& kernel)
         {
             gridToParticles3D(g, kernel, settings_, dt, nodes_, view);
+            if (settings_.smoothJ)
+            {
+                volumeChangeToGrid3D
+                (
+                    g, schedule_, kernel, stencilNodes_,
+                    particles_.cellStart().data(), view, nodes_
+                );
+                foldWalls
+                (
+                    g, stencilNodes_, settings_.wall, {nodes_.dVol.data()}, {}
+                );
+                volumeChangeToParticles3D
+                (
+                    g, kernel, settings_, dt, nodes_, view
+                );
+            }
         }
     );
     material_->updateStress(particles_, materialView(), dt);
@@ -607,6 +636,30 @@ Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
         passed += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
     }
     return passed + bar.passedOutflow();
+}
+
+
+void Foam::mpm3dFlow::smoothPressure()
+{
+    if (!settings_.smoothJ)
+    {
+        return;
+    }
+    const gridGeometry& g = grid_.geometry();
+    const mpm3DParticles view = kernelView();
+    const nodeBox box = particles_.stencilNodes(g);
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            nodalPressure3D
+            (
+                g, kernel, box, settings_.wall, view,
+                particles_.column(p_), nodes_
+            );
+        }
+    );
 }
 
 
