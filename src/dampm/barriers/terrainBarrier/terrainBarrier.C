@@ -25,6 +25,20 @@ namespace barrierModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+namespace
+{
+
+//- The barrier's dictionary, once it names its terrain (required here:
+//  the flat default of dampmFoam would hide a forgotten keyword)
+const Foam::dictionary& namingTerrain(const Foam::dictionary& dict)
+{
+    dict.get<Foam::word>("topography");
+    return dict;
+}
+
+} // End anonymous namespace
+
+
 Foam::barrierModels::terrainBarrier::terrainBarrier
 (
     const word& name,
@@ -33,7 +47,7 @@ Foam::barrierModels::terrainBarrier::terrainBarrier
 )
 :
     barrierModel(name, dict, caseDir),
-    topography_(topographyModel::New(dict, caseDir))
+    topography_(topographyModel::New(namingTerrain(dict), caseDir))
 {}
 
 

@@ -18,7 +18,8 @@ Foam::autoPtr<Foam::bedFrictionModel> Foam::bedFrictionModel::New
     const dictionary& dict
 )
 {
-    const word modelType(dict.get<word>("bedFriction"));
+    // Default: a term the case does not select costs nothing
+    const word modelType(dict.getOrDefault<word>("bedFriction", "none"));
 
     return autoPtr<bedFrictionModel>
     (

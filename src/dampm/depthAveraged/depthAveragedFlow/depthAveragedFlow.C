@@ -394,25 +394,9 @@ Foam::depthAveragedFlow::depthAveragedFlow
     shape_ = shapeFunction::New(shapeDict, 0.5/nPerCell_);
 
     const fileName caseDir = grid.mesh().time().path();
-    dictionary withDefaults(dict);
-    for
-    (
-        const auto& key :
-        {
-            std::pair<word, word>("topography", "flat"),
-            std::pair<word, word>("bedFriction", "none"),
-            std::pair<word, word>("rheology", "inviscid")
-        }
-    )
-    {
-        if (!withDefaults.found(key.first))
-        {
-            withDefaults.add(key.first, key.second);
-        }
-    }
-    topography_ = topographyModel::New(withDefaults, caseDir);
-    friction_ = bedFrictionModel::New(withDefaults);
-    rheology_ = rheologyModel::New(withDefaults);
+    topography_ = topographyModel::New(dict, caseDir);
+    friction_ = bedFrictionModel::New(dict);
+    rheology_ = rheologyModel::New(dict);
 
     {
         bool wall[3][2];

@@ -18,7 +18,8 @@ Foam::autoPtr<Foam::rheologyModel> Foam::rheologyModel::New
     const dictionary& dict
 )
 {
-    const word modelType(dict.get<word>("rheology"));
+    // Default: a term the case does not select costs nothing
+    const word modelType(dict.getOrDefault<word>("rheology", "inviscid"));
 
     return autoPtr<rheologyModel>
     (

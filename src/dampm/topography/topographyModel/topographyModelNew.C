@@ -19,7 +19,8 @@ Foam::autoPtr<Foam::topographyModel> Foam::topographyModel::New
     const fileName& caseDir
 )
 {
-    const word modelType(dict.get<word>("topography"));
+    // Default: flat, which costs nothing
+    const word modelType(dict.getOrDefault<word>("topography", "flat"));
 
     return autoPtr<topographyModel>
     (
