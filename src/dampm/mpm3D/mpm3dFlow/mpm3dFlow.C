@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpm3dFlow.H"
+#include "orderedSums.H"
 #include "visitShape.H"
 #include "particleCloudIO.H"
 #include "Time.H"
@@ -583,35 +584,33 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
     const double* m = particles_.column(particleArrays::M);
     const double g[3] = {settings_.g[0], settings_.g[1], settings_.g[2]};
 
-    double mass = 0, ke = 0, pe = 0, maxU2 = 0, px = 0, py = 0, pz = 0;
-    double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
-    #pragma omp parallel for schedule(static) \
-        reduction(+:mass, ke, pe, px, py, pz) reduction(max:maxU2) reduction(min:lo[:3]) reduction(max:hi[:3])
-    for (label i = 0; i < n; ++i)
+    // The same rounding on any number of threads
+    double S[6], mx[7];
+    orderedSums<6, 7>(n, S, mx, [&](label i, double* s, double* M)
     {
         const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
-        mass += m[i];
-        ke += 0.5*m[i]*u2;
-        px += m[i]*u[0][i];
-        py += m[i]*u[1][i];
-        pz += m[i]*u[2][i];
-        pe -= m[i]*(g[0]*x[0][i] + g[1]*x[1][i] + g[2]*x[2][i]);
-        maxU2 = u2 > maxU2 ? u2 : maxU2;
-        for (int d = 0; d < 3; ++d)
+        s[0] += m[i];
+        s[1] += 0.5*m[i]*u2;
+        s[2] -= m[i]*(g[0]*x[0][i] + g[1]*x[1][i] + g[2]*x[2][i]);
+        s[3] += m[i]*u[0][i];
+        s[4] += m[i]*u[1][i];
+        s[5] += m[i]*u[2][i];
+        const double v[7] =
+            {u2, -x[0][i], -x[1][i], -x[2][i], x[0][i], x[1][i], x[2][i]};
+        for (int k = 0; k < 7; ++k)
         {
-            lo[d] = x[d][i] < lo[d] ? x[d][i] : lo[d];
-            hi[d] = x[d][i] > hi[d] ? x[d][i] : hi[d];
+            M[k] = v[k] > M[k] ? v[k] : M[k];
         }
-    }
+    });
 
     totals t;
-    t.mass = mass;
-    t.kineticEnergy = ke;
-    t.potentialEnergy = pe;
-    t.maxSpeed = std::sqrt(maxU2);
-    t.momentum = vector(px, py, pz);
+    t.mass = S[0];
+    t.kineticEnergy = S[1];
+    t.potentialEnergy = S[2];
+    t.maxSpeed = std::sqrt(max(mx[0], 0.0));
+    t.momentum = vector(S[3], S[4], S[5]);
     t.extent = n
-        ? boundBox(point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2]))
+        ? boundBox(point(-mx[1], -mx[2], -mx[3]), point(mx[4], mx[5], mx[6]))
         : boundBox(point::zero, point::zero);
     return t;
 }
