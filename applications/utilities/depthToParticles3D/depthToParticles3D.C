@@ -76,6 +76,13 @@ int main(int argc, char *argv[])
     );
     argList::addOption
     (
+        "verticalVelocity",
+        "continuity|bed",
+        "Vertical velocity: the depth-averaged flow's, u.grad Z - z' div u"
+        " (continuity, default), or the bed's alone, u.grad Z (bed)"
+    );
+    argList::addOption
+    (
         "terrainTolerance",
         "m",
         "Largest difference of the two cases' terrain under the converted"
@@ -97,6 +104,14 @@ int main(int argc, char *argv[])
             << "-profile " << profile << " is invalid; allowed: "
             << columnsTo3D::profileNames.sortedToc() << exit(FatalError);
     }
+    const word vertical =
+        args.getOrDefault<word>("verticalVelocity", "continuity");
+    if (!columnsTo3D::verticalNames.found(vertical))
+    {
+        FatalErrorInFunction
+            << "-verticalVelocity " << vertical << " is invalid; allowed: "
+            << columnsTo3D::verticalNames.sortedToc() << exit(FatalError);
+    }
     columnsTo3D conversion
     (
         mesh.bounds(),
@@ -104,7 +119,8 @@ int main(int argc, char *argv[])
         flow3D.material(),
         mag(g.value()),
         columnsTo3D::profileNames[profile],
-        ground
+        ground,
+        columnsTo3D::verticalNames[vertical]
     );
     particleArrays particles3D(flow3D.particles());
     std::vector<char> converted;

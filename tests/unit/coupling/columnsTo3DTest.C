@@ -12,7 +12,8 @@ Description
     volume, horizontal momentum and its kinetic energy to round-off, in
     total and column by column; every particle lies inside its column's
     footprint and between the ground and the column's top, moves along the
-    bed (w = u . grad G) and starts at the hydrostatic pressure with the
+    bed and thins with the layer (w = u . grad G - z' div u, or the bed
+    term alone) and starts at the hydrostatic pressure with the
     material's J; the Bagnold profile keeps the depth average; columns
     outside the region are counted with their mass, and those at its sides
     keep their particles inside.
@@ -85,6 +86,7 @@ particleArrays randomColumns
     particleArrays c;
     const label A = c.addField("A", particleArrays::fieldKind::scalar);
     const label F = c.addField("F", particleArrays::fieldKind::tensor2D);
+    const label C = c.addField("gradU", particleArrays::fieldKind::tensor2D);
     c.append(n);
     std::mt19937 gen(seed);
     std::uniform_real_distribution<double> u(0, 1);
@@ -109,6 +111,11 @@ particleArrays randomColumns
         c.column(particleArrays::Y)[i] = y0 + (y1 - y0)*u(gen);
         c.column(particleArrays::UX)[i] = 20*(u(gen) - 0.5);
         c.column(particleArrays::UY)[i] = 20*(u(gen) - 0.5);
+        // A stretching or converging layer, div u in [-2, 2] 1/s
+        c.column(C)[i] = 2*(u(gen) - 0.5);
+        c.column(C + 1)[i] = u(gen) - 0.5;
+        c.column(C + 2)[i] = u(gen) - 0.5;
+        c.column(C + 3)[i] = 2*(u(gen) - 0.5);
     }
     return c;
 }
@@ -205,6 +212,9 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
         const double uc = columns.column(particleArrays::UX)[c];
         const double vc = columns.column(particleArrays::UY)[c];
         const double V0 = columns.column(particleArrays::VOL)[c]/p.size();
+        const label gradU = columns.field("gradU").first;
+        const double divU =
+            columns.column(gradU)[c] + columns.column(gradU + 3)[c];
 
         for (label i = 0; i < p.size(); ++i)
         {
@@ -224,7 +234,8 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
 
             EXPECT_DOUBLE_EQ(p.column(particleArrays::UX)[i], uc);
             EXPECT_DOUBLE_EQ(p.column(particleArrays::UY)[i], vc);
-            const double w = uc*groundDx(x, y) + vc*groundDy;
+            // Continuity: along the bed, and the layer's thinning
+            const double w = uc*groundDx(x, y) + vc*groundDy - (z - G)*divU;
             EXPECT_NEAR(p.column(particleArrays::UZ)[i], w, 1e-5*(1 + std::abs(w)));
 
             const double pressure = rho*g*(G + h - z);
@@ -238,6 +249,29 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
             EXPECT_NEAR(p.column(particleArrays::VOL)[i], J*V0, 1e-14*V0);
         }
     }
+}
+
+
+TEST(columnsTo3D, BedVerticalVelocityFollowsTheGroundOnly)
+{
+    const autoPtr<materialModel> mat = water();
+    const columnsTo3D conversion
+    (
+        region, spacing, *mat, g, columnsTo3D::profileType::uniform, ground,
+        columnsTo3D::verticalType::bed
+    );
+    const particleArrays columns = randomColumns(50, 1, 19, 1, 9, 19);
+    particleArrays p = fields3D();
+    const columnsTo3D::totals t = conversion.convert(columns, p);
+    for (label i = 0; i < p.size(); ++i)
+    {
+        const double x = p.column(particleArrays::X)[i];
+        const double y = p.column(particleArrays::Y)[i];
+        const double w = p.column(particleArrays::UX)[i]*groundDx(x, y)
+          + p.column(particleArrays::UY)[i]*groundDy;
+        EXPECT_NEAR(p.column(particleArrays::UZ)[i], w, 1e-5*(1 + std::abs(w)));
+    }
+    EXPECT_DOUBLE_EQ(t.kineticEnergyVertical, t.kineticEnergyBed);
 }
 
 
