@@ -628,13 +628,12 @@ Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
     const double* y = particles_.column(particleArrays::Y);
     const double* z = particles_.column(particleArrays::Z);
     const double* m = particles_.column(particleArrays::M);
-    double passed = 0;
-    #pragma omp parallel for schedule(static) reduction(+:passed)
-    for (label i = 0; i < n; ++i)
+    double passed[1], none[1];
+    orderedSums<1, 0>(n, passed, none, [&](label i, double* s, double*)
     {
-        passed += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
-    }
-    return passed + bar.passedOutflow();
+        s[0] += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
+    });
+    return passed[0] + bar.passedOutflow();
 }
 
 
