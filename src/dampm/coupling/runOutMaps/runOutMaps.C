@@ -88,6 +88,44 @@ Foam::runOutMaps::runOutMaps
 }
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::runOutMaps::writeDict
+(
+    const Time& runTime3D,
+    const fileName& sourceCase,
+    const word& sourceTime,
+    const hazardMaps* maps
+)
+{
+    IOdictionary dict
+    (
+        IOobject
+        (
+            dictName,
+            runTime3D.timeName(),
+            "uniform",
+            runTime3D,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    dict.set("sourceCase", sourceCase);
+    // A string: a time name such as 1.5 would read back as a number
+    dict.set("sourceTime", string(sourceTime));
+    if (maps)
+    {
+        maps->saveMaxima(dict);
+    }
+    dict.regIOobject::writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
@@ -135,26 +173,7 @@ void Foam::runOutMaps::writeSource
     const word& sourceTime
 )
 {
-    IOdictionary dict
-    (
-        IOobject
-        (
-            dictName,
-            runTime3D.timeName(),
-            "uniform",
-            runTime3D,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    dict.set("sourceCase", sourceCase);
-    dict.set("sourceTime", string(sourceTime));
-    dict.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
+    writeDict(runTime3D, sourceCase, sourceTime, nullptr);
 }
 
 
@@ -256,27 +275,7 @@ void Foam::runOutMaps::write(const Time& runTime3D) const
         runTime3D.globalPath()/"postProcessing"/"hazardMaps"
        /runTime3D.timeName()
     );
-    IOdictionary dict
-    (
-        IOobject
-        (
-            dictName,
-            runTime3D.timeName(),
-            "uniform",
-            runTime3D,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    dict.set("sourceCase", sourceCase_);
-    dict.set("sourceTime", string(sourceTime_));
-    maps_->saveMaxima(dict);
-    dict.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
+    writeDict(runTime3D, sourceCase_, sourceTime_, maps_.get());
 }
 
 
