@@ -10,6 +10,8 @@ License
 
 #include "barrierModel.H"
 #include "orderedSums.H"
+#include <algorithm>
+#include <numeric>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -103,6 +105,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
 
     // One plane of nodes at a time: bounded memory for big grids
     nodes_.clear();
+    std::vector<double> depth;
     nearNodes_.clear();
     nearZ_.clear();
     for (int d = 0; d < 3; ++d)
@@ -142,6 +145,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
             if (phi[pi] <= onSurface && phi[pi] >= -band)
             {
                 nodes_.push_back(ids[pi]);
+                depth.push_back(-phi[pi]);
                 for (int d = 0; d < 3; ++d)
                 {
                     normal_[d].push_back(nrm[pi][d]);
@@ -178,6 +182,87 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
             << "barrier " << name_ << " has no grid node inside it or on its"
             << " surface: it lies outside the mesh or is thinner than the"
             << " node spacing, and takes no part in the flow" << endl;
+    }
+    warnIfThin(g, depth);
+}
+
+
+void Foam::barrierModel::warnIfThin
+(
+    const gridGeometry& g,
+    const std::vector<double>& depth
+) const
+{
+    // Neighbouring contact nodes less than a cell deep whose nearest faces
+    // look opposite ways lie in a part thinner than about two cells: a node
+    // there may take the far face's normal, and flow arriving at it then
+    // passes (contact acts only on approach)
+    const double h = max(max(g.dx[0], g.dx[1]), g.dx[2]);
+    std::vector<gridGeometry::index> sorted(nodes_);
+    std::vector<label> order(nodes_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&](const label a, const label b) { return nodes_[a] < nodes_[b]; }
+    );
+    for (size_t k = 0; k < order.size(); ++k)
+    {
+        sorted[k] = nodes_[order[k]];
+    }
+    // The contact node at a flat index (-1: none)
+    auto contactNode = [&](const gridGeometry::index n) -> label
+    {
+        const auto it = std::lower_bound(sorted.begin(), sorted.end(), n);
+        return it != sorted.end() && *it == n ? order[it - sorted.begin()] : -1;
+    };
+    label nThin = 0;
+    forAll(nodes_, c)
+    {
+        if (!(depth[c] < h))
+        {
+            continue;
+        }
+        // One node layer: nothing behind the node, against its normal
+        int a = 0;
+        for (int d = 1; d < 3; ++d)
+        {
+            a = mag(normal_[d][c]) > mag(normal_[a][c]) ? d : a;
+        }
+        const gridGeometry::index behind = nodes_[c]
+          - (normal_[a][c] > 0 ? 1 : -1)*g.nodeStride[a];
+        if (g.dim == 3 && contactNode(behind) < 0)
+        {
+            ++nThin;
+            continue;
+        }
+        for (int d = 0; d < 3; ++d)
+        {
+            const label o = contactNode(nodes_[c] + g.nodeStride[d]);
+            if (o < 0)
+            {
+                continue;
+            }
+            if (!(depth[o] < h))
+            {
+                continue;
+            }
+            const double dot =
+                normal_[0][c]*normal_[0][o] + normal_[1][c]*normal_[1][o]
+              + normal_[2][c]*normal_[2][o];
+            if (dot < -0.5)
+            {
+                ++nThin;
+                break;
+            }
+        }
+    }
+    if (nThin)
+    {
+        WarningInFunction
+            << "barrier " << name_ << " is thinner than about two cells at "
+            << nThin << " grid nodes: flow may pass through it there; refine"
+            << " the mesh or thicken the barrier" << endl;
     }
 }
 
