@@ -63,10 +63,10 @@ void Foam::depthAveragedFlow::bindCommon(View& v)
     {
         v.C[k] = p.column(gradU_ + k);
     }
-    for (int k = 0; k < 3; ++k)
-    {
-        v.sigma[k] = p.column(sigma_ + k);
-    }
+    // In-plane components xx, xy, yy of the symmTensor field
+    v.sigma[0] = p.column(sigma_);
+    v.sigma[1] = p.column(sigma_ + 1);
+    v.sigma[2] = p.column(sigma_ + 3);
     v.s = p.column(basal_);
     v.k1 = p.column(basal_ + 1);
     v.k2 = p.column(basal_ + 2);
@@ -352,7 +352,8 @@ Foam::depthAveragedFlow::depthAveragedFlow
     schedule_(grid.geometry()),
     massTol_(0),
     outflowMass_(0),
-    prepared_(false)
+    prepared_(false),
+    stressPending_(false)
 {
     if (!grid.is2D())
     {
@@ -414,7 +415,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     A_ = particles_.addField("A", kind::scalar);
     F_ = particles_.addField("F", kind::tensor2D);
     gradU_ = particles_.addField("gradU", kind::tensor2D);
-    sigma_ = particles_.addField("sigma", kind::internal, 0, 3);
+    sigma_ = particles_.addField("sigma", kind::symmTensor);
     gradZeta_ = particles_.addField("gradZeta", kind::internal, 0, 2);
     gradZ_ = particles_.addField("gradZ", kind::internal, 0, 2);
     kappa_ = particles_.addField("kappa", kind::internal, 1, 1);
@@ -504,6 +505,22 @@ Foam::depthAveragedFlow::depthAveragedFlow
         );
         splitHMin_ = std::strtod(digits, nullptr);
     }
+    if (rheology_->defaultShearModulus())
+    {
+        // G = rho g H0/2: elastic wave speed sqrt(2 G/rho) = sqrt(g H0), the
+        // gravity-wave speed of the thickest column (doc section 9); to
+        // three digits, as splitHMin
+        char digits[32];
+        std::snprintf
+        (
+            digits, sizeof(digits), "%.3g",
+            0.5*rho_*g_*maxColumnThickness()
+        );
+        rheology_->setDefaultShearModulus(std::strtod(digits, nullptr));
+    }
+    // A cloud without the stress (older, or converted): compute it at the
+    // first step from the velocity gradient (unstressed for G > 0)
+    stressPending_ = restarted && missing.found("sigma");
     flagged_.reserve(particles_.size());
     splitList_.reserve(particles_.size());
 }
@@ -560,6 +577,10 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
     state.set("splitHMin", splitHMin_);
+    if (rheology_->defaultShearModulus())
+    {
+        state.set("shearModulus", rheology_->shearModulus());
+    }
 }
 
 
@@ -570,6 +591,10 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
     if (!splitHMinGiven_)
     {
         splitHMin_ = state.getOrDefault<scalar>("splitHMin", splitHMin_);
+    }
+    if (rheology_->defaultShearModulus() && state.found("shearModulus"))
+    {
+        rheology_->setDefaultShearModulus(state.get<scalar>("shearModulus"));
     }
 }
 
@@ -632,19 +657,28 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
     const double* h = particles_.column(h_);
     const double gravity = g_;
 
-    double maxWave = 0;
-    #pragma omp parallel for schedule(static) reduction(max:maxWave)
+    // Elastic wave speed squared of a Maxwell stress (0 if viscous)
+    const bool active = rheology_->active();
+    const double cE2 = active ? 2*rheology_->shearModulus()/rho_ : 0;
+
+    // Gravity waves, and gravity and elastic waves together
+    double maxWave = 0, maxElastic = 0;
+    #pragma omp parallel for schedule(static) \
+        reduction(max:maxWave) reduction(max:maxElastic)
     for (label i = 0; i < n; ++i)
     {
-        const double c = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i])
-          + std::sqrt(gravity*max(h[i], 0.0));
+        const double u = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i]);
+        const double gh = gravity*max(h[i], 0.0);
+        const double c = u + std::sqrt(gh);
+        const double cE = u + std::sqrt(gh + cE2);
         maxWave = c > maxWave ? c : maxWave;
+        maxElastic = cE > maxElastic ? cE : maxElastic;
     }
 
     const scalar delta = min(g.dx[0], g.dx[1]);
     scalar dt = maxWave > 0 ? maxCo*delta/maxWave : GREAT;
     limit = "wave";
-    const scalar muMax = rheology_->active() ? rheology_->maxViscosity() : 0;
+    const scalar muMax = active ? rheology_->maxViscosity() : 0;
     if (muMax > 0)
     {
         const scalar dtVisc = maxCo*rho_*delta*delta/(4*muMax);
@@ -652,6 +686,16 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
         {
             dt = dtVisc;
             limit = "viscous";
+
+            // A Maxwell stress is stable within either the viscous or the
+            // elastic limit (doc section 9): the larger one holds
+            const scalar dtElastic =
+                cE2 > 0 && maxElastic > 0 ? maxCo*delta/maxElastic : 0;
+            if (dtElastic > dt)
+            {
+                dt = dtElastic;
+                limit = "elastic";
+            }
         }
     }
     return dt;
@@ -677,10 +721,11 @@ void Foam::depthAveragedFlow::computeForces()
         }
         rheology_->addResistance(view);
     }
-    if (stress)
+    if (stress && stressPending_)
     {
-        rheology_->stress(view);
+        rheology_->stress(view, 0);
     }
+    stressPending_ = false;
 
     const shallowColumns cols = columns();
     const columnScatter scatter
@@ -820,6 +865,13 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         }
         particles_.removeFlagged(flagged_);
         outflowMass_ += removed;
+    }
+
+    // The stress of the end of the step, from the gradient at the new
+    // positions (a split copies it to both halves)
+    if (rheology_->active())
+    {
+        rheology_->stress(modelView(), dt);
     }
     splitColumns();
     prepared_ = false;

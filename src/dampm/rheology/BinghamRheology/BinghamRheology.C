@@ -32,7 +32,11 @@ Foam::rheologyModels::BinghamRheology::BinghamRheology
 :
     NewtonianRheology(coeffs),
     viscosity_(coeffs, yieldViscosity::lawType::Bingham)
-{}
+{
+    // Without a yield stress there is no plug: purely viscous by default,
+    // the same run as the Newtonian rheology
+    readShearModulus(viscosity_.tauY() > 0);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -45,14 +49,18 @@ Foam::scalar Foam::rheologyModels::BinghamRheology::maxViscosity() const
 
 void Foam::rheologyModels::BinghamRheology::stress
 (
-    const shallowParticles& p
+    const shallowParticles& p,
+    const scalar dt
 ) const
 {
     const yieldViscosity muEff(viscosity_);
-    viscousStress(p, [&muEff](const double gammaDot)
-    {
-        return muEff(gammaDot);
-    });
+    viscousStress
+    (
+        p,
+        [&muEff](const double gammaDot) { return muEff(gammaDot); },
+        G_,
+        dt
+    );
 }
 
 
@@ -81,6 +89,8 @@ void Foam::rheologyModels::BinghamRheology::describe(Ostream& os) const
 {
     os  << "Bingham (";
     viscosity_.describe(os);
+    os  << ", ";
+    describeStress(os);
     os  << ", basal shear " << (basalShear_ ? "on" : "off") << ")";
 }
 

@@ -33,18 +33,21 @@ Foam::rheologyModels::NewtonianRheology::NewtonianRheology
     rheologyModel(coeffs),
     mu_(readNonNegative("mu")),
     basalShear_(coeffs.getOrDefault<bool>("basalShear", false))
-{}
+{
+    readShearModulus(false);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::rheologyModels::NewtonianRheology::stress
 (
-    const shallowParticles& p
+    const shallowParticles& p,
+    const scalar dt
 ) const
 {
     const double mu = mu_;
-    viscousStress(p, [mu](double) { return mu; });
+    viscousStress(p, [mu](double) { return mu; }, G_, dt);
 }
 
 
@@ -73,8 +76,9 @@ void Foam::rheologyModels::NewtonianRheology::addResistance
 
 void Foam::rheologyModels::NewtonianRheology::describe(Ostream& os) const
 {
-    os  << "Newtonian (mu = " << mu_ << " Pa s, basal shear "
-        << (basalShear_ ? "on" : "off") << ")";
+    os  << "Newtonian (mu = " << mu_ << " Pa s, ";
+    describeStress(os);
+    os  << ", basal shear " << (basalShear_ ? "on" : "off") << ")";
 }
 
 

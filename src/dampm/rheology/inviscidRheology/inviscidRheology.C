@@ -38,10 +38,11 @@ Foam::rheologyModels::inviscidRheology::inviscidRheology
 
 void Foam::rheologyModels::inviscidRheology::stress
 (
-    const shallowParticles& p
+    const shallowParticles& p,
+    const scalar dt
 ) const
 {
-    viscousStress(p, [](double) { return 0.0; });
+    viscousStress(p, [](double) { return 0.0; }, 0, dt);
 }
 
 

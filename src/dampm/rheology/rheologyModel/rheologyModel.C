@@ -34,11 +34,45 @@ Foam::scalar Foam::rheologyModel::readNonNegative(const word& key) const
 }
 
 
+void Foam::rheologyModel::describeStress(Ostream& os) const
+{
+    if (G_ > 0)
+    {
+        os  << "Maxwell stress, G = " << G_ << " Pa";
+    }
+    else if (defaultModulus_)
+    {
+        os  << "Maxwell stress, G not set";
+    }
+    else
+    {
+        os  << "viscous stress";
+    }
+}
+
+
+void Foam::rheologyModel::readShearModulus(const bool defaultMaxwell)
+{
+    if (coeffs_.found("shearModulus"))
+    {
+        G_ = readNonNegative("shearModulus");
+        defaultModulus_ = false;
+    }
+    else
+    {
+        G_ = 0;
+        defaultModulus_ = defaultMaxwell;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rheologyModel::rheologyModel(const dictionary& coeffs)
 :
-    coeffs_(coeffs)
+    coeffs_(coeffs),
+    G_(0),
+    defaultModulus_(false)
 {}
 
 
