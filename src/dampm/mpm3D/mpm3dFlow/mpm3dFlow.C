@@ -482,6 +482,11 @@ void Foam::mpm3dFlow::particlesToGrid()
                     g, stencilNodes_, settings_.wall,
                     {nodes_.vol.data(), nodes_.pV.data()}, {}
                 );
+                // pV: the node pressure from here on
+                nodeMeans3D
+                (
+                    g, stencilNodes_, nodes_.vol.data(), nodes_.pV.data()
+                );
             }
             particlesToGrid3D
             (
@@ -565,6 +570,11 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
                 foldWalls
                 (
                     g, stencilNodes_, settings_.wall, {nodes_.dVol.data()}, {}
+                );
+                // dVol: the node volume ratio from here on
+                nodeMeans3D
+                (
+                    g, stencilNodes_, nodes_.vol.data(), nodes_.dVol.data()
                 );
                 volumeChangeToParticles3D
                 (
