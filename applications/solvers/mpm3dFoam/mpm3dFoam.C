@@ -62,6 +62,7 @@ int main(int argc, char *argv[])
     }
 
     Info<< "\nStarting time loop\n" << endl;
+    timers.start();
 
     while (runTime.run())
     {

@@ -44,6 +44,14 @@ Foam::mpm3DParticles Foam::mpm3dFlow::kernelView()
     }
     v.J = p.column(J_);
     v.div = p.column(div_);
+    if (settings_.smoothJ)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            vGrid_[d].resize(v.n);
+            v.vGrid[d] = vGrid_[d].data();
+        }
+    }
     return v;
 }
 
@@ -474,6 +482,11 @@ void Foam::mpm3dFlow::particlesToGrid()
                     g, stencilNodes_, settings_.wall,
                     {nodes_.vol.data(), nodes_.pV.data()}, {}
                 );
+                // pV: the node pressure from here on
+                nodeMeans3D
+                (
+                    g, stencilNodes_, nodes_.vol.data(), nodes_.pV.data()
+                );
             }
             particlesToGrid3D
             (
@@ -547,17 +560,21 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
         *shape_,
         [&](const auto& kernel)
         {
-            gridToParticles3D(g, kernel, settings_, dt, nodes_, view);
+            gridToParticles3D
+            (
+                g, schedule_, kernel, stencilNodes_,
+                particles_.cellStart().data(), settings_, dt, nodes_, view
+            );
             if (settings_.smoothJ)
             {
-                volumeChangeToGrid3D
-                (
-                    g, schedule_, kernel, stencilNodes_,
-                    particles_.cellStart().data(), view, nodes_
-                );
                 foldWalls
                 (
                     g, stencilNodes_, settings_.wall, {nodes_.dVol.data()}, {}
+                );
+                // dVol: the node volume ratio from here on
+                nodeMeans3D
+                (
+                    g, stencilNodes_, nodes_.vol.data(), nodes_.dVol.data()
                 );
                 volumeChangeToParticles3D
                 (
