@@ -50,6 +50,7 @@ Description
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"
 #include "runOutMaps.H"
+#include "runOutCase.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

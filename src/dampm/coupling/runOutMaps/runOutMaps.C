@@ -26,53 +26,12 @@ Foam::runOutMaps::runOutMaps
     const word& sourceTime
 )
 :
-    sourceCase_(sourceCase),
-    sourceTime_(sourceTime)
+    sourceTime_(sourceTime),
+    case_(sourceCase)
 {
-    if (!isFile(sourceCase_/"system"/"controlDict"))
-    {
-        FatalErrorInFunction
-            << "the run-out case " << sourceCase_ << " of the hazard maps is"
-            << " missing (no system/controlDict)" << exit(FatalError);
-    }
-    runTime_.reset
-    (
-        new Time
-        (
-            Time::controlDictName,
-            sourceCase_.path(),
-            fileName(sourceCase_.name())
-        )
-    );
-    runTime_->setTime(instant(readScalar(sourceTime_), sourceTime_), 0);
-    mesh_.reset
-    (
-        new fvMesh
-        (
-            IOobject
-            (
-                fvMesh::defaultRegion,
-                runTime_->timeName(),
-                *runTime_,
-                IOobject::MUST_READ
-            )
-        )
-    );
-    grid_.reset(new mpmGrid(*mesh_));
-
-    const IOdictionary props
-    (
-        IOobject
-        (
-            "dampmProperties",
-            runTime_->constant(),
-            *mesh_,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    topography_ = topographyModel::New(props, sourceCase_);
+    case_.setTime(instant(readScalar(sourceTime_), sourceTime_), 0);
+    grid_.reset(new mpmGrid(case_.mesh()));
+    topography_ = topographyModel::New(case_.properties(), case_.path());
 
     const gridGeometry& g = grid_->geometry();
     nodes_.resize(g.nNodes());
@@ -81,7 +40,6 @@ Foam::runOutMaps::runOutMaps
     {
         a->assign(g.nNodes(), 0.0);
     }
-    active_.lo[0] = active_.lo[1] = active_.hi[0] = active_.hi[1] = 0;
 
     // The run-out's maps of the hand-off time (point fields there)
     maps_.reset(new hazardMaps(*grid_, *topography_, nodes_.Z.data()));
@@ -158,7 +116,7 @@ Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
         maps->maps_->loadMaxima(dict);
     }
     Info<< "Hazard maps: continuing those of the run-out "
-        << maps->sourceCase_ << " (time " << maps->sourceTime_
+        << maps->case_.path() << " (time " << maps->sourceTime_
         << ") on its grid" << nl << endl;
     return maps;
 }
@@ -275,7 +233,7 @@ void Foam::runOutMaps::write(const Time& runTime3D) const
         runTime3D.globalPath()/"postProcessing"/"hazardMaps"
        /runTime3D.timeName()
     );
-    writeDict(runTime3D, sourceCase_, sourceTime_, maps_.get());
+    writeDict(runTime3D, case_.path(), sourceTime_, maps_.get());
 }
 
 
