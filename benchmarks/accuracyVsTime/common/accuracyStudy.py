@@ -134,7 +134,7 @@ def readRuns(work):
             if line.startswith("#") or not line.strip():
                 continue
             solver, shape, ppc, nx, dx, wall, cpu, case = line.split()
-            runs.append(dict(solver=solver, shape=shape, ppc=int(ppc), nx=int(nx), dx=float(dx),
+            runs.append(dict(solver=solver, shape=shape, ppc=int(ppc) if ppc != "-" else 0, nx=int(nx), dx=float(dx),
                              wall=float(wall), cpu=float(cpu), case=case))
     return runs
 
@@ -209,17 +209,23 @@ def fmtTime(s):
     return "%.2f" % s if s < 10 else "%.1f" % s
 
 
-def cheapest(runs, metric, tol, solver=None):
-    ok = [r for r in runs if abs(r[metric]) <= tol and (solver is None or r["solver"] == solver)]
+def setting(r):
+    what = "%d cells (dx %g m)" % (r["nx"], r["dx"])
+    if r["solver"] == "dampmFoam":
+        what = "%s, %d ppc, %s" % (r["shape"], r["ppc"], what)
+    return what
+
+
+def cheapest(runs, metric, tol, solver):
+    """The least wall time of a solver's runs with |error| <= tol, else the
+    best error reached."""
+    pool = [r for r in runs if r["solver"] == solver]
+    ok = [r for r in pool if abs(r[metric]) <= tol]
     if ok:
         r = min(ok, key=lambda r: r["wall"])
-        return "%s %s ppc %s, %d cells (dx %g m): %s s, %s %.2g %%" % (
-            r["solver"], r["shape"], r["ppc"], r["nx"], r["dx"], fmtTime(r["wall"]),
-            "L1" if metric == "l1" else "front", 100 * r[metric])
-    pool = [r for r in runs if solver is None or r["solver"] == solver]
+        return "%s: %s s (%+.2g %%)" % (setting(r), fmtTime(r["wall"]), 100 * r[metric])
     best = min(pool, key=lambda r: abs(r[metric]))
-    return "none reached (best %.2g %% with %s %s ppc %s, %d cells, %s s)" % (
-        100 * best[metric], best["solver"], best["shape"], best["ppc"], best["nx"], fmtTime(best["wall"]))
+    return "none reached (best %+.2g %%: %s, %s s)" % (100 * best[metric], setting(best), fmtTime(best["wall"]))
 
 
 def plot(runs, metric, ylabel, path, title):
