@@ -139,6 +139,14 @@ def readRuns(work):
     return runs
 
 
+def readFailed(work):
+    """Lines of work/failed.dat (runs that stopped), split."""
+    path = os.path.join(work, "failed.dat")
+    if not os.path.isfile(path):
+        return []
+    return [line.split() for line in open(path) if line.strip() and not line.startswith("#")]
+
+
 def profile(run, problem):
     """(x, h) along the channel at the end time, x in dampmFoam's frame:
     dampmFoam's grid nodes on one line of the mesh (the channel is uniform
@@ -297,6 +305,12 @@ def study(problem, work, out, note):
         for tol in THRESHOLDS:
             lines.append("| %s | %g %% | %s | %s |" % (name, 100 * tol, cheapest(runs, metric, tol, "dampmFoam"),
                                                        cheapest(runs, metric, tol, "shallowWaterFoam")))
+    failed = readFailed(work)
+    if failed:
+        lines += ["", "Runs that failed (not in the table, the fits or the plots):", ""]
+        for f in failed:
+            lines.append("- dampmFoam %s, %s ppc, %s cells (dx %s m): stopped at t = %s s after %s s (log: %s)"
+                         % (f[1], f[2], f[3], f[4], f[8], fmtTime(float(f[5])), os.path.basename(f[7])))
     lines += ["", "![L1 error against wall time](l1VsTime.png)", "",
               "![front error against wall time](frontVsTime.png)", ""]
     with open(os.path.join(out, "results.md"), "w") as f:
