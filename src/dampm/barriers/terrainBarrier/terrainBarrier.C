@@ -77,21 +77,6 @@ void Foam::barrierModels::terrainBarrier::distance
 }
 
 
-void Foam::barrierModels::terrainBarrier::inside
-(
-    const pointField& points,
-    boolList& in
-) const
-{
-    const topographyModel& Z = *topography_;
-    in.setSize(points.size());
-    forAll(points, i)
-    {
-        in[i] = points[i].z() < Z.Z(points[i].x(), points[i].y());
-    }
-}
-
-
 void Foam::barrierModels::terrainBarrier::describeGeometry(Ostream& os) const
 {
     os  << "terrain ";
