@@ -73,11 +73,11 @@ int main(int argc, char *argv[])
         ++runTime;
 
         timers.run(stepTimers::grid, [&]{ flow.updateGrid(dt); });
-        timers.run(stepTimers::contact, [&]
+        timers.run(stepTimers::contact, [&]{ flow.contact(dt); });
+        timers.run(stepTimers::G2P, [&]
         {
-            flow.contact(dt, runTime.value());
+            flow.gridToParticles(dt, runTime.value());
         });
-        timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
         timers.countStep(flow.particles().size());
 
         if (eventMaps)

@@ -30,6 +30,44 @@ Foam::barrierModel::contactTypeNames
 });
 
 
+namespace
+{
+
+//- The velocity v after contact with a surface of outward unit normal n,
+//  when it moves into it (vn = v.n < 0): the normal part removed and the
+//  tangential one kept (slip), removed (noSlip) or reduced by mu |vn|
+//  (Coulomb)
+inline void contactVelocity
+(
+    const Foam::barrierModel::contactType contact,
+    const double mu,
+    const double n[3],
+    const double vn,
+    double v[3]
+)
+{
+    typedef Foam::barrierModel::contactType type;
+    double vt[3] = {v[0] - vn*n[0], v[1] - vn*n[1], v[2] - vn*n[2]};
+    double keep = 1;
+    if (contact == type::noSlip)
+    {
+        keep = 0;
+    }
+    else if (contact == type::Coulomb)
+    {
+        const double magVt =
+            std::sqrt(vt[0]*vt[0] + vt[1]*vt[1] + vt[2]*vt[2]);
+        keep = magVt > -mu*vn ? 1 + mu*vn/magVt : 0;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        v[d] = keep*vt[d];
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::barrierModel::barrierModel
@@ -46,6 +84,7 @@ Foam::barrierModel::barrierModel
     friction_(0),
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
+    nStopped_(0),
     runUp_(-GREAT),
     maxRunUp_(-GREAT),
     passLevel_(GREAT),
@@ -87,6 +126,13 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
     const scalar h = max(max(g.dx[0], g.dx[1]), g.dx[2]);
     const scalar band = 3*h;
     const scalar onSurface = 1e-9*h;
+    // A cell that holds a point of the barrier has every corner node within
+    // a cell diagonal of it (margin: terrain's distance is approximate)
+    const scalar nearCellDistance = 1.25*std::sqrt
+    (
+        sqr(g.dx[0]) + sqr(g.dx[1]) + sqr(g.dx[2])
+    );
+    nearCell_.assign(g.nCellsTotal(), 0);
 
     const boundBox bb = bounds();
     const point lo = bb.min() - vector::uniform(band);
@@ -142,6 +188,27 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         distance(pointField(pts), phi, nrm);
         forAll(pts, pi)
         {
+            if (phi[pi] <= nearCellDistance)
+            {
+                // The (up to) eight cells around the node
+                gridGeometry::index ijk[3];
+                g.nodeIJK(ids[pi], ijk);
+                for (int c = 0; c < 8; ++c)
+                {
+                    const gridGeometry::index ci = ijk[0] - 1 + (c & 1);
+                    const gridGeometry::index cj = ijk[1] - 1 + ((c >> 1) & 1);
+                    const gridGeometry::index ck = ijk[2] - 1 + ((c >> 2) & 1);
+                    if
+                    (
+                        ci >= 0 && ci < g.nCells[0]
+                     && cj >= 0 && cj < g.nCells[1]
+                     && ck >= 0 && ck < g.nCells[2]
+                    )
+                    {
+                        nearCell_[g.cellIndex(ci, cj, ck)] = 1;
+                    }
+                }
+            }
             if (phi[pi] <= onSurface && phi[pi] >= -band)
             {
                 nodes_.push_back(ids[pi]);
@@ -175,13 +242,26 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
             );
             passLevel_ = max(passLevel_, x & overtopDir_);
         }
+        // No node inside a barrier thinner than the node spacing: its far
+        // side, from its bounding box
+        const boundBox bb = bounds();
+        if (nodes_.empty() && bb != boundBox::greatBox)
+        {
+            const pointField corners(bb.points());
+            for (const point& c : corners)
+            {
+                passLevel_ = max(passLevel_, c & overtopDir_);
+            }
+        }
     }
     if (nodes_.empty())
     {
         WarningInFunction
             << "barrier " << name_ << " has no grid node inside it or on its"
             << " surface: it lies outside the mesh or is thinner than the"
-            << " node spacing, and takes no part in the flow" << endl;
+            << " node spacing; only the particles' guard stops the flow at"
+            << " it, and its force acts on the particles alone (no node"
+            << " pressure, writePressure)" << endl;
     }
     warnIfThin(g, depth);
 }
@@ -195,8 +275,10 @@ void Foam::barrierModel::warnIfThin
 {
     // Neighbouring contact nodes less than a cell deep whose nearest faces
     // look opposite ways lie in a part thinner than about two cells: a node
-    // there may take the far face's normal, and flow arriving at it then
-    // passes (contact acts only on approach)
+    // there may take the far face's normal, and flow arriving at it is not
+    // stopped at the nodes (contact acts only on approach); the particles'
+    // guard stops it, so the force there acts on the particles and is
+    // missing from the node pressure
     const double h = max(max(g.dx[0], g.dx[1]), g.dx[2]);
     std::vector<gridGeometry::index> sorted(nodes_);
     std::vector<label> order(nodes_.size());
@@ -261,8 +343,10 @@ void Foam::barrierModel::warnIfThin
     {
         WarningInFunction
             << "barrier " << name_ << " is thinner than about two cells at "
-            << nThin << " grid nodes: flow may pass through it there; refine"
-            << " the mesh or thicken the barrier" << endl;
+            << nThin << " grid nodes: the particles' guard stops the flow"
+            << " there, but part of the contact force acts on particles and"
+            << " is missing from the node pressure (writePressure); refine"
+            << " the mesh for a resolved pressure" << endl;
     }
 }
 
@@ -271,8 +355,7 @@ void Foam::barrierModel::applyContact
 (
     mpm3DGrid& grid,
     const double massTol,
-    const double dt,
-    const scalar t
+    const double dt
 )
 {
     const label nc = label(nodes_.size());
@@ -296,26 +379,9 @@ void Foam::barrierModel::applyContact
             fn[c] = 0;
             return;
         }
-        // Tangential velocity kept, removed or reduced by friction
-        double vt[3] =
-        {
-            v[0] - vn*nx[c], v[1] - vn*ny[c], v[2] - vn*nz[c]
-        };
-        double keep = 1;
-        if (contact == contactType::noSlip)
-        {
-            keep = 0;
-        }
-        else if (contact == contactType::Coulomb)
-        {
-            const double magVt =
-                std::sqrt(vt[0]*vt[0] + vt[1]*vt[1] + vt[2]*vt[2]);
-            keep = magVt > -mu*vn ? 1 + mu*vn/magVt : 0;
-        }
-        for (int d = 0; d < 3; ++d)
-        {
-            vt[d] *= keep;
-        }
+        const double nrm[3] = {nx[c], ny[c], nz[c]};
+        double vt[3] = {v[0], v[1], v[2]};
+        contactVelocity(contact, mu, nrm, vn, vt);
         const double k = mi/dt;
         S[0] += k*(v[0] - vt[0]);
         S[1] += k*(v[1] - vt[1]);
@@ -343,11 +409,155 @@ void Foam::barrierModel::applyContact
     }
     runUp_ = top;
     maxRunUp_ = max(maxRunUp_, top);
+}
+
+
+void Foam::barrierModel::inside
+(
+    const pointField& points,
+    boolList& in
+) const
+{
+    scalarField phi;
+    vectorField normal;
+    distance(points, phi, normal);
+    in.setSize(points.size());
+    forAll(points, i)
+    {
+        in[i] = phi[i] < 0;
+    }
+}
+
+
+Foam::label Foam::barrierModel::stopEntries
+(
+    const gridGeometry& g,
+    const double* const x0[3],
+    const mpm3DParticles& p,
+    const double dt,
+    const scalar t
+)
+{
+    // Candidates: the particles that end the step in a cell the barrier may
+    // occupy, then those of them inside it that were outside at the start
+    candidates_.clear();
+    for (label i = 0; guardsParticles() && i < label(p.n); ++i)
+    {
+        if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
+        {
+            candidates_.push_back(i);
+        }
+    }
+    label nc = label(candidates_.size());
+    double F[3] = {0, 0, 0};
+    pointField a, b(nc);
+    if (nc)
+    {
+        forAll(b, c)
+        {
+            const label i = candidates_[c];
+            b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
+        }
+        boolList in;
+        inside(b, in);
+        label m = 0;
+        forAll(b, c)
+        {
+            if (in[c])
+            {
+                candidates_[m++] = candidates_[c];
+            }
+        }
+        nc = m;
+        candidates_.resize(nc);
+        a.setSize(nc);
+        b.setSize(nc);
+        forAll(a, c)
+        {
+            const label i = candidates_[c];
+            a[c] = point(x0[0][i], x0[1][i], x0[2][i]);
+            b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
+        }
+        inside(a, in);
+        m = 0;
+        forAll(a, c)
+        {
+            if (!in[c])
+            {
+                candidates_[m] = candidates_[c];
+                a[m] = a[c];
+                b[m] = b[c];
+                ++m;
+            }
+        }
+        nc = m;
+        candidates_.resize(nc);
+        a.setSize(nc);
+        b.setSize(nc);
+    }
+    if (nc)
+    {
+        // Where each path entered: bisection between the start (outside,
+        // a) and the end (inside, b), to 2^-30 of the step's move
+        const pointField end(b);
+        pointField mid(nc);
+        boolList in;
+        for (int iter = 0; iter < 30; ++iter)
+        {
+            forAll(mid, c)
+            {
+                mid[c] = 0.5*(a[c] + b[c]);
+            }
+            inside(mid, in);
+            forAll(mid, c)
+            {
+                (in[c] ? b[c] : a[c]) = mid[c];
+            }
+        }
+
+        // The entered face's normal, at the point just outside it; the end
+        // point projected on that face's tangent plane keeps the motion
+        // along the face (exact on plane faces)
+        scalarField phi;
+        vectorField normal;
+        distance(a, phi, normal);
+        pointField onFace(nc);
+        forAll(onFace, c)
+        {
+            onFace[c] = end[c] + ((a[c] - end[c]) & normal[c])*normal[c];
+        }
+        inside(onFace, in);
+
+        // In storage order: the same force on any number of threads
+        forAll(onFace, c)
+        {
+            const label i = candidates_[c];
+            const point& x = in[c] ? a[c] : onFace[c];
+            double v[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
+            const double nrm[3] = {normal[c].x(), normal[c].y(), normal[c].z()};
+            const double vn = v[0]*nrm[0] + v[1]*nrm[1] + v[2]*nrm[2];
+            if (vn < 0)
+            {
+                contactVelocity(contact_, friction_, nrm, vn, v);
+            }
+            const double k = p.m[i]/dt;
+            for (int d = 0; d < 3; ++d)
+            {
+                F[d] += k*(p.u[d][i] - v[d]);
+                p.u[d][i] = v[d];
+                p.x[d][i] = x[d];
+            }
+        }
+        nStopped_ += nc;
+    }
+
+    force_ += vector(F[0], F[1], F[2]);
     if (mag(force_) > peakForce_)
     {
         peakForce_ = mag(force_);
         peakTime_ = t;
     }
+    return nc;
 }
 
 

@@ -162,6 +162,16 @@ void Foam::barrierModels::triSurfaceBarrier::distance
 }
 
 
+void Foam::barrierModels::triSurfaceBarrier::inside
+(
+    const pointField& points,
+    boolList& in
+) const
+{
+    in = search_->calcInside(points);
+}
+
+
 void Foam::barrierModels::triSurfaceBarrier::describeGeometry
 (
     Ostream& os

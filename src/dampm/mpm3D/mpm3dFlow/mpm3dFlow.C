@@ -542,19 +542,30 @@ void Foam::mpm3dFlow::updateGrid(const scalar dt)
 }
 
 
-void Foam::mpm3dFlow::contact(const scalar dt, const scalar t)
+void Foam::mpm3dFlow::contact(const scalar dt)
 {
     for (barrierModel& b : barriers_)
     {
-        b.applyContact(nodes_, settings_.massTol, dt, t);
+        b.applyContact(nodes_, settings_.massTol, dt);
     }
 }
 
 
-void Foam::mpm3dFlow::gridToParticles(const scalar dt)
+void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
 {
     const gridGeometry& g = grid_.geometry();
     const mpm3DParticles view = kernelView();
+    const label n = particles_.size();
+    const double* x0[3] = {nullptr, nullptr, nullptr};
+    if (!barriers_.empty())
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            const double* x = particles_.column(particleArrays::X + d);
+            xOld_[d].assign(x, x + n);
+            x0[d] = xOld_[d].data();
+        }
+    }
     visitShape
     (
         *shape_,
@@ -583,6 +594,10 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
             }
         }
     );
+    for (barrierModel& b : barriers_)
+    {
+        b.stopEntries(g, x0, view, dt, t);
+    }
     material_->updateStress(particles_, materialView(), dt);
     outflowMass_ += removeOutflow();
 }
