@@ -109,6 +109,15 @@ bool Foam::depthAveragedFlow::basalActive() const
 }
 
 
+bool Foam::depthAveragedFlow::fusedGather() const
+{
+    return
+        pressureForm_ == pressureFormType::gradient
+     && !basalActive()
+     && !rheology_->active();
+}
+
+
 void Foam::depthAveragedFlow::seed(const releaseModel& release)
 {
     const gridGeometry& g = grid_.geometry();
@@ -353,7 +362,9 @@ Foam::depthAveragedFlow::depthAveragedFlow
     massTol_(0),
     outflowMass_(0),
     prepared_(false),
-    stressPending_(false)
+    stressPending_(false),
+    terrainFree_(false),
+    forcesDone_(false)
 {
     if (!grid.is2D())
     {
@@ -521,6 +532,22 @@ Foam::depthAveragedFlow::depthAveragedFlow
     // A cloud without the stress (older, or converted): compute it at the
     // first step from the velocity gradient (unstressed for G > 0)
     stressPending_ = restarted && missing.found("sigma");
+
+    // A bed flat at Z = 0: the terrain terms of S5 are exactly 0, 0 and 1
+    // (a restart's cloud may hold others); set once, kept by splits
+    terrainFree_ = topography_->isFlat();
+    for (label n = 0; terrainFree_ && n < geom.nNodes(); ++n)
+    {
+        terrainFree_ = nodes_.Z[n] == 0;
+    }
+    if (terrainFree_)
+    {
+        const label n = particles_.size();
+        std::fill_n(particles_.column(Zb_), n, 0.0);
+        std::fill_n(particles_.column(gradZ_), n, 0.0);
+        std::fill_n(particles_.column(gradZ_ + 1), n, 0.0);
+        std::fill_n(particles_.column(kappa_), n, 1.0);
+    }
     flagged_.reserve(particles_.size());
     splitList_.reserve(particles_.size());
 }
@@ -632,12 +659,34 @@ void Foam::depthAveragedFlow::particlesToGrid()
         g, activeNodes_, nodes_, rho_, massTol_, slopeCorrection_,
         kappaNode_.data()
     );
+
+    // S5, or S5 and S7 together when no model comes between them
+    forcesDone_ = fusedGather();
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
-            gatherSurface(g, kernel, nodes_, cols, hMin_, slopeCorrection_);
+            typedef std::decay_t<decltype(kernel)> K;
+            auto run = [&](auto terrain)
+            {
+                if (forcesDone_)
+                {
+                    scatterForces<K, true, false, false, true, terrain()>
+                    (
+                        scatter, kernel, nodes_, cols, rho_, g_, hMin_,
+                        slopeCorrection_
+                    );
+                }
+                else
+                {
+                    gatherSurface<K, terrain()>
+                    (
+                        g, kernel, nodes_, cols, hMin_, slopeCorrection_
+                    );
+                }
+            };
+            terrainFree_ ? run(std::false_type()) : run(std::true_type());
         }
     );
     prepared_ = true;
@@ -726,6 +775,13 @@ void Foam::depthAveragedFlow::computeForces()
         rheology_->stress(view, 0);
     }
     stressPending_ = false;
+
+    // Scattered with S5 already (particlesToGrid)
+    if (forcesDone_)
+    {
+        forcesDone_ = false;
+        return;
+    }
 
     const shallowColumns cols = columns();
     const columnScatter scatter
