@@ -1025,4 +1025,20 @@ Foam::word Foam::depthAveragedFlow::nonFiniteField() const
 }
 
 
+Foam::scalar Foam::depthAveragedFlow::maxHorizontalSpeed() const
+{
+    const label n = particles_.size();
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    double v2 = 0;
+    #pragma omp parallel for schedule(static) reduction(max:v2)
+    for (label i = 0; i < n; ++i)
+    {
+        const double s2 = ux[i]*ux[i] + uy[i]*uy[i];
+        v2 = s2 > v2 ? s2 : v2;
+    }
+    return std::sqrt(v2);
+}
+
+
 // ************************************************************************* //
