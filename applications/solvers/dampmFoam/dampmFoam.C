@@ -59,6 +59,9 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::IO, [&]{ runTime.writeNow(); });
     }
 
+    // The last time directory written (the guard names it)
+    word lastWritten = runTime.timeName();
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -102,6 +105,7 @@ int main(int argc, char *argv[])
         {
             #include "writeFields.H"
             timers.run(stepTimers::IO, [&]{ runTime.write(); });
+            lastWritten = runTime.timeName();
         }
     }
 

@@ -14,6 +14,7 @@ License
 #include "transfers.H"
 #include "particleCloudIO.H"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -29,6 +30,8 @@ Foam::depthAveragedFlow::pressureFormNames
 const Foam::word Foam::depthAveragedFlow::cloudName("dampmCloud");
 
 const Foam::scalar Foam::depthAveragedFlow::splitHMinFraction = 0.01;
+
+const Foam::scalar Foam::depthAveragedFlow::speedLimitFactor = 10;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -196,6 +199,25 @@ Foam::scalar Foam::depthAveragedFlow::maxColumnThickness() const
 }
 
 
+Foam::scalar Foam::depthAveragedFlow::speedScale() const
+{
+    const label n = particles_.size();
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    const double* h = particles_.column(h_);
+    double wave = 0, hMax = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const double hi = max(h[i], 0.0);
+        wave = max(wave, std::hypot(ux[i], uy[i]) + std::sqrt(g_*hi));
+        hMax = max(hMax, hi);
+    }
+    const auto range = std::minmax_element(nodes_.Z.begin(), nodes_.Z.end());
+    const double relief = *range.second - *range.first;
+    return wave + std::sqrt(2*g_*(relief + hMax));
+}
+
+
 Foam::label Foam::depthAveragedFlow::splitColumns()
 {
     if (!(splitRatio_ > 0))
@@ -348,6 +370,8 @@ Foam::depthAveragedFlow::depthAveragedFlow
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
     splitHMinGiven_(dict.found("splitHMin")),
+    speedLimit_(dict.getOrDefault<scalar>("speedLimit", 0)),
+    speedLimitGiven_(dict.found("speedLimit")),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
     pressureForm_
     (
@@ -396,6 +420,12 @@ Foam::depthAveragedFlow::depthAveragedFlow
         FatalIOErrorInFunction(dict)
             << "splitHMin = " << splitHMin_ << " is invalid; allowed:"
             << " splitHMin >= 0 [m]" << exit(FatalIOError);
+    }
+    if (speedLimitGiven_ && !(speedLimit_ > 0 && std::isfinite(speedLimit_)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "speedLimit = " << speedLimit_ << " is invalid; allowed:"
+            << " finite speedLimit > 0 [m/s]" << exit(FatalIOError);
     }
 
     dictionary shapeDict(dict);
@@ -516,6 +546,16 @@ Foam::depthAveragedFlow::depthAveragedFlow
         );
         splitHMin_ = std::strtod(digits, nullptr);
     }
+    if (!speedLimitGiven_)
+    {
+        // To three digits, as splitHMin
+        char digits[32];
+        std::snprintf
+        (
+            digits, sizeof(digits), "%.3g", speedLimitFactor*speedScale()
+        );
+        speedLimit_ = std::strtod(digits, nullptr);
+    }
     if (rheology_->defaultShearModulus())
     {
         // G = rho g H0/2: elastic wave speed sqrt(2 G/rho) = sqrt(g H0), the
@@ -577,6 +617,8 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     {
         os  << "off";
     }
+    os  << nl << "    speed limit     " << speedLimit_ << " m/s (the run stops"
+        << " above it" << (speedLimitGiven_ ? ")" : ", default)");
     os  << nl << "    topography      ";
     topography_->describe(os);
     os  << nl << "    bed friction    ";
@@ -604,6 +646,7 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
     state.set("splitHMin", splitHMin_);
+    state.set("speedLimit", speedLimit_);
     if (rheology_->defaultShearModulus())
     {
         state.set("shearModulus", rheology_->shearModulus());
@@ -618,6 +661,10 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
     if (!splitHMinGiven_)
     {
         splitHMin_ = state.getOrDefault<scalar>("splitHMin", splitHMin_);
+    }
+    if (!speedLimitGiven_)
+    {
+        speedLimit_ = state.getOrDefault<scalar>("speedLimit", speedLimit_);
     }
     if (rheology_->defaultShearModulus() && state.found("shearModulus"))
     {
@@ -1012,11 +1059,41 @@ void Foam::depthAveragedFlow::diagnostics
 
 bool Foam::depthAveragedFlow::finite() const
 {
-    return particles_.finite
-    ({
-        particleArrays::X, particleArrays::Y, particleArrays::UX,
-        particleArrays::UY, h_
-    });
+    return nonFiniteField().empty();
+}
+
+
+Foam::word Foam::depthAveragedFlow::nonFiniteField() const
+{
+    if (!particles_.finite({particleArrays::X, particleArrays::Y}))
+    {
+        return "positions";
+    }
+    if (!particles_.finite({particleArrays::UX, particleArrays::UY}))
+    {
+        return "U";
+    }
+    if (!particles_.finite({h_}))
+    {
+        return "h";
+    }
+    return word::null;
+}
+
+
+Foam::scalar Foam::depthAveragedFlow::maxHorizontalSpeed() const
+{
+    const label n = particles_.size();
+    const double* ux = particles_.column(particleArrays::UX);
+    const double* uy = particles_.column(particleArrays::UY);
+    double v2 = 0;
+    #pragma omp parallel for schedule(static) reduction(max:v2)
+    for (label i = 0; i < n; ++i)
+    {
+        const double s2 = ux[i]*ux[i] + uy[i]*uy[i];
+        v2 = s2 > v2 ? s2 : v2;
+    }
+    return std::sqrt(v2);
 }
 
 
