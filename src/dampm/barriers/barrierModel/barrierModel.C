@@ -85,6 +85,7 @@ Foam::barrierModel::barrierModel
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
     nStopped_(0),
+    guardDepth_(0),
     runUp_(-GREAT),
     maxRunUp_(-GREAT),
     passLevel_(GREAT),
@@ -133,6 +134,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         sqr(g.dx[0]) + sqr(g.dx[1]) + sqr(g.dx[2])
     );
     nearCell_.assign(g.nCellsTotal(), 0);
+    guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
 
     const boundBox bb = bounds();
     const point lo = bb.min() - vector::uniform(band);
@@ -429,6 +431,30 @@ void Foam::barrierModel::inside
 }
 
 
+void Foam::barrierModel::guardInside
+(
+    const pointField& points,
+    boolList& in
+) const
+{
+    if (guardDepth_ > 0)
+    {
+        scalarField phi;
+        vectorField normal;
+        distance(points, phi, normal);
+        in.setSize(points.size());
+        forAll(points, i)
+        {
+            in[i] = phi[i] < -guardDepth_;
+        }
+    }
+    else
+    {
+        inside(points, in);
+    }
+}
+
+
 Foam::label Foam::barrierModel::stopEntries
 (
     const gridGeometry& g,
@@ -459,7 +485,7 @@ Foam::label Foam::barrierModel::stopEntries
             b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
         }
         boolList in;
-        inside(b, in);
+        guardInside(b, in);
         label m = 0;
         forAll(b, c)
         {
@@ -478,7 +504,7 @@ Foam::label Foam::barrierModel::stopEntries
             a[c] = point(x0[0][i], x0[1][i], x0[2][i]);
             b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
         }
-        inside(a, in);
+        guardInside(a, in);
         m = 0;
         forAll(a, c)
         {
@@ -508,7 +534,7 @@ Foam::label Foam::barrierModel::stopEntries
             {
                 mid[c] = 0.5*(a[c] + b[c]);
             }
-            inside(mid, in);
+            guardInside(mid, in);
             forAll(mid, c)
             {
                 (in[c] ? b[c] : a[c]) = mid[c];
@@ -526,7 +552,7 @@ Foam::label Foam::barrierModel::stopEntries
         {
             onFace[c] = end[c] + ((a[c] - end[c]) & normal[c])*normal[c];
         }
-        inside(onFace, in);
+        guardInside(onFace, in);
 
         // In storage order: the same force on any number of threads
         forAll(onFace, c)
