@@ -467,7 +467,8 @@ Foam::label Foam::barrierModel::stopEntries
     // Candidates: the particles that end the step in a cell the barrier may
     // occupy, then those of them inside it that were outside at the start
     candidates_.clear();
-    for (label i = 0; guardsParticles() && i < label(p.n); ++i)
+    const label nGuarded = guardsParticles() ? label(p.n) : 0;
+    for (label i = 0; i < nGuarded; ++i)
     {
         if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
         {

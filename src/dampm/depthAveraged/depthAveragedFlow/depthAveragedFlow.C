@@ -33,6 +33,18 @@ const Foam::scalar Foam::depthAveragedFlow::splitHMinFraction = 0.01;
 
 const Foam::scalar Foam::depthAveragedFlow::speedLimitFactor = 10;
 
+namespace
+{
+    //- A default derived from the state, to three digits: readable in the
+    //  log, and read back exactly from the state file on restart
+    double threeDigits(const double x)
+    {
+        char digits[32];
+        std::snprintf(digits, sizeof(digits), "%.3g", x);
+        return std::strtod(digits, nullptr);
+    }
+}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -536,38 +548,20 @@ Foam::depthAveragedFlow::depthAveragedFlow
     massTol_ = 1e-12*mMax;
     if (!splitHMinGiven_)
     {
-        // To three digits: readable in the log, and read back exactly from
-        // the state file on restart
-        char digits[32];
-        std::snprintf
-        (
-            digits, sizeof(digits), "%.3g",
-            splitHMinFraction*maxColumnThickness()
-        );
-        splitHMin_ = std::strtod(digits, nullptr);
+        splitHMin_ = threeDigits(splitHMinFraction*maxColumnThickness());
     }
     if (!speedLimitGiven_)
     {
-        // To three digits, as splitHMin
-        char digits[32];
-        std::snprintf
-        (
-            digits, sizeof(digits), "%.3g", speedLimitFactor*speedScale()
-        );
-        speedLimit_ = std::strtod(digits, nullptr);
+        speedLimit_ = threeDigits(speedLimitFactor*speedScale());
     }
     if (rheology_->defaultShearModulus())
     {
         // G = rho g H0/2: elastic wave speed sqrt(2 G/rho) = sqrt(g H0), the
-        // gravity-wave speed of the thickest column (doc section 9); to
-        // three digits, as splitHMin
-        char digits[32];
-        std::snprintf
+        // gravity-wave speed of the thickest column (doc section 9)
+        rheology_->setDefaultShearModulus
         (
-            digits, sizeof(digits), "%.3g",
-            0.5*rho_*g_*maxColumnThickness()
+            threeDigits(0.5*rho_*g_*maxColumnThickness())
         );
-        rheology_->setDefaultShearModulus(std::strtod(digits, nullptr));
     }
     // A cloud without the stress (older, or converted): compute it at the
     // first step from the velocity gradient (unstressed for G > 0)
@@ -1065,6 +1059,18 @@ bool Foam::depthAveragedFlow::finite() const
 
 Foam::word Foam::depthAveragedFlow::nonFiniteField() const
 {
+    // One pass in the usual case; the field is named only after a failure
+    if
+    (
+        particles_.finite
+        ({
+            particleArrays::X, particleArrays::Y, particleArrays::UX,
+            particleArrays::UY, h_
+        })
+    )
+    {
+        return word::null;
+    }
     if (!particles_.finite({particleArrays::X, particleArrays::Y}))
     {
         return "positions";
