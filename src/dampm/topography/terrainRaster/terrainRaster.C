@@ -540,8 +540,10 @@ void Foam::terrainRaster::applyNoDataPolicy(const noDataPolicy policy)
             << ", map coordinates ("
             << exactText(mapOrigin_.x() + i*dx_).c_str() << ' '
             << exactText(mapOrigin_.y() + (ny_ - 1 - r)*dy_).c_str() << ")."
-            << " Allowed: a raster without NODATA, or the NODATA policy"
-            << " 'fill' to fill them from their neighbours"
+            << " Allowed: a raster without NODATA, or the keyword noData"
+            << " (allowed values: fail, 'fill') set to 'fill' beside the"
+            << " raster's file name in the dictionary, to fill them from their"
+            << " neighbours"
             << exit(FatalIOError);
     }
 
