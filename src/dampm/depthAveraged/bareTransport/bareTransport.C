@@ -21,22 +21,85 @@ Foam::bareTransport::bareTransport
 :
     g_(g),
     schedule_(g),
-    massTol_(massTol)
+    massTol_(massTol),
+    rho_(0),
+    gravity_(0),
+    gradU_(-1),
+    F_(-1),
+    h_(-1),
+    a_(-1),
+    kappa_(-1),
+    gradZeta_(-1)
 {
     nodes_.resize(g.nNodes());
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+Foam::bareTransport::bareTransport
+(
+    const gridGeometry& g,
+    const double massTol,
+    particleArrays& p,
+    const int nPerCell,
+    const double rho,
+    const double gravity
+)
+:
+    bareTransport(g, massTol)
+{
+    rho_ = rho;
+    gravity_ = gravity;
+    typedef particleArrays::fieldKind kind;
+    gradU_ = p.addField("gradU", kind::tensor2D);
+    F_ = p.addField("F", kind::internal, 0, 4);
+    h_ = p.addField("h", kind::internal);
+    a_ = p.addField("a", kind::internal);
+    kappa_ = p.addField("kappa", kind::internal, 1);
+    gradZeta_ = p.addField("gradZeta", kind::internal, 0, 2);
 
-void Foam::bareTransport::step
+    // Footprints of the seed lattice
+    for (int d = 0; d < 2; ++d)
+    {
+        std::fill_n(p.column(F_ + 3*d), p.size(), g.dx[d]/nPerCell);
+    }
+    nodalAreas(g, quadraticBSplineKernel(), nPerCell, nodes_.area.data());
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::shallowColumns Foam::bareTransport::columns
 (
     particleArrays& p,
-    const label gradU,
-    const double dt
-)
+    const label gradU
+) const
 {
-    const quadraticBSplineKernel kernel;
+    shallowColumns cols;
+    cols.n = p.size();
+    cols.x = p.column(particleArrays::X);
+    cols.y = p.column(particleArrays::Y);
+    cols.ux = p.column(particleArrays::UX);
+    cols.uy = p.column(particleArrays::UY);
+    cols.m = p.column(particleArrays::M);
+    cols.V = p.column(particleArrays::VOL);
+    for (int k = 0; k < 4; ++k)
+    {
+        cols.C[k] = p.column(gradU + k);
+    }
+    if (h_ >= 0)
+    {
+        cols.h = p.column(h_);
+        cols.a = p.column(a_);
+        cols.kappa = p.column(kappa_);
+        cols.gradZetaX = p.column(gradZeta_);
+        cols.gradZetaY = p.column(gradZeta_ + 1);
+    }
+    return cols;
+}
+
+
+void Foam::bareTransport::scatter(particleArrays& p, const label gradU)
+{
     p.sortByCell(g_, schedule_.maxStale());
 
     // The nodes the columns touch, and those of last step to clear them
@@ -45,22 +108,31 @@ void Foam::bareTransport::step
     activeNodes_.unite(stencilNodes_);
     zeroNodes(g_, activeNodes_, nodes_);
 
-    shallowColumns cols;
-    cols.n = p.size();
-    cols.x = p.column(particleArrays::X);
-    cols.y = p.column(particleArrays::Y);
-    cols.ux = p.column(particleArrays::UX);
-    cols.uy = p.column(particleArrays::UY);
-    cols.m = p.column(particleArrays::M);
-    for (int k = 0; k < 4; ++k)
-    {
-        cols.C[k] = p.column(gradU + k);
-    }
-    const columnScatter scatter
-    {
-        g_, stencilNodes_, schedule_, p.cellStart().data()
-    };
-    scatterMomentum(scatter, kernel, nodes_, cols);
+    const columnScatter sc{g_, stencilNodes_, schedule_, p.cellStart().data()};
+    scatterMomentum(sc, quadraticBSplineKernel(), nodes_, columns(p, gradU));
+}
+
+
+void Foam::bareTransport::gather(particleArrays& p, const label gradU)
+{
+    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
+    gridToParticlesVelocity<2>
+    (
+        g_, quadraticBSplineKernel(), p, gradU, vel
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bareTransport::advect
+(
+    particleArrays& p,
+    const label gradU,
+    const double dt
+)
+{
+    scatter(p, gradU);
 
     // Node velocities (zero on empty nodes)
     const double massTol = massTol_;
@@ -82,8 +154,7 @@ void Foam::bareTransport::step
         }
     );
 
-    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
-    gridToParticlesVelocity<2>(g_, kernel, p, gradU, vel);
+    gather(p, gradU);
 
     const label n = p.size();
     double* x = p.column(particleArrays::X);
@@ -95,6 +166,51 @@ void Foam::bareTransport::step
     {
         x[i] += dt*ux[i];
         y[i] += dt*uy[i];
+    }
+}
+
+
+void Foam::bareTransport::shallowWater(particleArrays& p, const double dt)
+{
+    // hMin of the basal area V/max(h, hMin): dampmFoam's default
+    const double hMin = 1e-4;
+
+    scatter(p, gradU_);
+    nodeHeights(g_, activeNodes_, nodes_, rho_, massTol_, false, nullptr);
+    const columnScatter sc{g_, stencilNodes_, schedule_, p.cellStart().data()};
+    scatterForces<quadraticBSplineKernel, true, false, false, true, false>
+    (
+        sc, quadraticBSplineKernel(), nodes_, columns(p, gradU_), rho_,
+        gravity_, hMin
+    );
+    resistanceUpdate
+    (
+        g_, activeNodes_, nodes_, domainSides(), dt, massTol_, false
+    );
+    gather(p, gradU_);
+
+    const label n = p.size();
+    double* x = p.column(particleArrays::X);
+    double* y = p.column(particleArrays::Y);
+    const double* ux = p.column(particleArrays::UX);
+    const double* uy = p.column(particleArrays::UY);
+    double* C[4];
+    double* F[4];
+    for (int k = 0; k < 4; ++k)
+    {
+        C[k] = p.column(gradU_ + k);
+        F[k] = p.column(F_ + k);
+    }
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        x[i] += dt*ux[i];
+        y[i] += dt*uy[i];
+        advanceColumn
+        (
+            dt, C[0][i], C[1][i], C[2][i], C[3][i],
+            F[0][i], F[1][i], F[2][i], F[3][i]
+        );
     }
 }
 

@@ -230,24 +230,43 @@ Foam::scalar Foam::depthAveragedFlow::speedScale() const
 }
 
 
-Foam::label Foam::depthAveragedFlow::splitColumns()
+bool Foam::depthAveragedFlow::splitting() const
 {
-    if (!(splitRatio_ > 0))
+    return splitRatio_ > 0;
+}
+
+
+Foam::splitRule Foam::depthAveragedFlow::splitRules() const
+{
+    const gridGeometry& g = grid_.geometry();
+    splitRule rule;
+    rule.maxArea = splitRatio_*seedArea();
+    rule.hSplit = max(hMin_, splitHMin_);
+    for (int d = 0; d < 2; ++d)
+    {
+        rule.cell[d] = g.dx[d];
+        rule.lo[d] = g.origin[d];
+        rule.hi[d] = g.upper(d);
+    }
+    return rule;
+}
+
+
+Foam::label Foam::depthAveragedFlow::splitColumns(const bool marked)
+{
+    if (!splitting())
     {
         return 0;
     }
     const gridGeometry& g = grid_.geometry();
     const double cell[2] = {g.dx[0], g.dx[1]};
-    const double maxArea = splitRatio_*seedArea();
-    const double hSplit = max(hMin_, splitHMin_);
     const label n = particles_.size();
 
-    // Columns to split: footprint above maxArea, not thinner than hSplit
-    // (thinner sheets carry little mass: refining them would multiply the
-    // columns for nothing), both halves inside the domain. Marked in
-    // parallel, listed in storage order: the same children on any number
-    // of threads.
+    // Marked in parallel, listed in storage order: the same children on any
+    // number of threads
+    if (!marked)
     {
+        const splitRule rule = splitRules();
         const double* F[4] =
         {
             particles_.column(F_), particles_.column(F_ + 1),
@@ -256,33 +275,19 @@ Foam::label Foam::depthAveragedFlow::splitColumns()
         const double* x = particles_.column(particleArrays::X);
         const double* y = particles_.column(particleArrays::Y);
         const double* V = particles_.column(particleArrays::VOL);
-        flagged_.assign(n, 0);
+        splitFlags_.resize(n);
 
         #pragma omp parallel for schedule(static)
         for (label i = 0; i < n; ++i)
         {
             const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
-            const double area = std::abs(Fi[0]*Fi[3] - Fi[1]*Fi[2]);
-            if (area > maxArea && V[i] >= hSplit*area)
-            {
-                double d[2], Fc[4];
-                splitFootprint(Fi, cell, d, Fc);
-                const double pos[2] = {x[i], y[i]};
-                bool inside = true;
-                for (int k = 0; k < 2; ++k)
-                {
-                    inside = inside
-                        && pos[k] - std::abs(d[k]) > g.origin[k]
-                        && pos[k] + std::abs(d[k]) < g.upper(k);
-                }
-                flagged_[i] = inside;
-            }
+            splitFlags_[i] = rule(Fi, V[i], x[i], y[i]);
         }
     }
     splitList_.clear();
     for (label i = 0; i < n; ++i)
     {
-        if (flagged_[i])
+        if (splitFlags_[i])
         {
             splitList_.push_back(i);
         }
@@ -583,6 +588,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
         std::fill_n(particles_.column(kappa_), n, 1.0);
     }
     flagged_.reserve(particles_.size());
+    splitFlags_.reserve(particles_.size());
     splitList_.reserve(particles_.size());
 }
 
@@ -751,18 +757,33 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
     const bool active = rheology_->active();
     const double cE2 = active ? 2*rheology_->shearModulus()/rho_ : 0;
 
-    // Gravity waves, and gravity and elastic waves together
+    // Gravity waves, and gravity and elastic waves together (without a
+    // Maxwell stress only the first). simd: the maxima are exact in any
+    // order, and the square roots vectorise.
     double maxWave = 0, maxElastic = 0;
-    #pragma omp parallel for schedule(static) \
-        reduction(max:maxWave) reduction(max:maxElastic)
-    for (label i = 0; i < n; ++i)
+    if (cE2 > 0)
     {
-        const double u = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i]);
-        const double gh = gravity*max(h[i], 0.0);
-        const double c = u + std::sqrt(gh);
-        const double cE = u + std::sqrt(gh + cE2);
-        maxWave = c > maxWave ? c : maxWave;
-        maxElastic = cE > maxElastic ? cE : maxElastic;
+        #pragma omp parallel for simd schedule(static) \
+            reduction(max:maxWave) reduction(max:maxElastic)
+        for (label i = 0; i < n; ++i)
+        {
+            const double u = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i]);
+            const double gh = gravity*(h[i] > 0 ? h[i] : 0);
+            const double c = u + std::sqrt(gh);
+            const double cE = u + std::sqrt(gh + cE2);
+            maxWave = c > maxWave ? c : maxWave;
+            maxElastic = cE > maxElastic ? cE : maxElastic;
+        }
+    }
+    else
+    {
+        #pragma omp parallel for simd schedule(static) reduction(max:maxWave)
+        for (label i = 0; i < n; ++i)
+        {
+            const double u = std::sqrt(ux[i]*ux[i] + uy[i]*uy[i]);
+            const double c = u + std::sqrt(gravity*(h[i] > 0 ? h[i] : 0));
+            maxWave = c > maxWave ? c : maxWave;
+        }
     }
 
     const scalar delta = min(g.dx[0], g.dx[1]);
@@ -915,10 +936,16 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     double* ux = particles_.column(particleArrays::UX);
     double* uy = particles_.column(particleArrays::UY);
     const double* m = particles_.column(particleArrays::M);
-    flagged_.assign(n, 0);
+    const double* V = particles_.column(particleArrays::VOL);
+    flagged_.resize(n);
+    splitFlags_.resize(n);
     const domainSides sides = sides_;
+    const bool split = splitting();
+    const splitRule rule = splitRules();
     label nRemoved = 0;
 
+    // The columns to split are marked here, while their footprints are at
+    // hand, and again after a removal (which moves them)
     #pragma omp parallel for schedule(static) reduction(+:nRemoved)
     for (label i = 0; i < n; ++i)
     {
@@ -931,6 +958,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
             dt, C[0][i], C[1][i], C[2][i], C[3][i],
             F[0][i], F[1][i], F[2][i], F[3][i]
         );
+        flagged_[i] = 0;
         for (int d = 0; d < 2 && !flagged_[i]; ++d)
         {
             const double eps = 1e-6*g.dx[d];
@@ -951,6 +979,11 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
                 }
             }
         }
+        if (split)
+        {
+            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+            splitFlags_[i] = rule(Fi, V[i], x[i], y[i]);
+        }
     }
     // The outflow tallied in storage order: the same on any number of threads
     double removed = 0;
@@ -970,7 +1003,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     {
         rheology_->stress(modelView(), dt);
     }
-    splitColumns();
+    splitColumns(nRemoved == 0);
     prepared_ = false;
     return removed;
 }
@@ -1005,13 +1038,7 @@ void Foam::depthAveragedFlow::updateOutputFields()
 }
 
 
-void Foam::depthAveragedFlow::diagnostics
-(
-    scalar& mass,
-    scalar& kineticEnergy,
-    scalar& maxSpeed,
-    boundBox& extent
-) const
+Foam::depthAveragedFlow::totals Foam::depthAveragedFlow::diagnostics() const
 {
     const label n = particles_.size();
     const double* x = particles_.column(particleArrays::X);
@@ -1019,41 +1046,50 @@ void Foam::depthAveragedFlow::diagnostics
     const double* ux = particles_.column(particleArrays::UX);
     const double* uy = particles_.column(particleArrays::UY);
     const double* m = particles_.column(particleArrays::M);
+    const double* h = particles_.column(h_);
     const double* gx = particles_.column(gradZ_);
     const double* gy = particles_.column(gradZ_ + 1);
 
-    // The same rounding on any number of threads
-    double sums[2], maxima[5];
-    orderedSums<2, 5>(n, sums, maxima, [&](label i, double* S, double* mx)
+    // The same rounding on any number of threads; a flat bed reads no
+    // gradient
+    double sums[2], maxima[7];
+    auto pass = [&](auto terrain)
     {
-        // Speed along the bed: the vertical component follows the terrain
-        const double w = ux[i]*gx[i] + uy[i]*gy[i];
-        const double v2 = ux[i]*ux[i] + uy[i]*uy[i] + w*w;
-        S[0] += m[i];
-        S[1] += 0.5*m[i]*v2;
-        const double v[5] = {v2, -x[i], x[i], -y[i], y[i]};
-        for (int k = 0; k < 5; ++k)
+        orderedSums<2, 7>(n, sums, maxima, [&](label i, double* S, double* mx)
         {
-            mx[k] = v[k] > mx[k] ? v[k] : mx[k];
-        }
-    });
-    mass = sums[0];
-    kineticEnergy = sums[1];
-    maxSpeed = std::sqrt(max(maxima[0], 0.0));
-    extent = n
+            // Speed along the bed: the vertical component follows the
+            // terrain
+            const double w = terrain() ? ux[i]*gx[i] + uy[i]*gy[i] : 0;
+            const double u2 = ux[i]*ux[i] + uy[i]*uy[i];
+            const double v2 = u2 + w*w;
+            S[0] += m[i];
+            S[1] += 0.5*m[i]*v2;
+            // A NaN or infinity in any of them makes the sum one
+            const double broken =
+                std::isfinite(x[i] + y[i] + ux[i] + uy[i] + h[i]) ? 0 : 1;
+            const double v[7] = {v2, -x[i], x[i], -y[i], y[i], u2, broken};
+            for (int k = 0; k < 7; ++k)
+            {
+                mx[k] = v[k] > mx[k] ? v[k] : mx[k];
+            }
+        });
+    };
+    terrainFree_ ? pass(std::false_type()) : pass(std::true_type());
+
+    totals t;
+    t.mass = sums[0];
+    t.kineticEnergy = sums[1];
+    t.maxSpeed = std::sqrt(max(maxima[0], 0.0));
+    t.maxHorizontalSpeed = std::sqrt(max(maxima[5], 0.0));
+    t.finite = !(maxima[6] > 0);
+    t.extent = n
         ? boundBox
           (
               point(-maxima[1], -maxima[3], 0),
               point(maxima[2], maxima[4], 0)
           )
         : boundBox(point::zero, point::zero);
-}
-
-
-
-bool Foam::depthAveragedFlow::finite() const
-{
-    return nonFiniteField().empty();
+    return t;
 }
 
 
@@ -1084,22 +1120,6 @@ Foam::word Foam::depthAveragedFlow::nonFiniteField() const
         return "h";
     }
     return word::null;
-}
-
-
-Foam::scalar Foam::depthAveragedFlow::maxHorizontalSpeed() const
-{
-    const label n = particles_.size();
-    const double* ux = particles_.column(particleArrays::UX);
-    const double* uy = particles_.column(particleArrays::UY);
-    double v2 = 0;
-    #pragma omp parallel for schedule(static) reduction(max:v2)
-    for (label i = 0; i < n; ++i)
-    {
-        const double s2 = ux[i]*ux[i] + uy[i]*uy[i];
-        v2 = s2 > v2 ? s2 : v2;
-    }
-    return std::sqrt(v2);
 }
 
 
