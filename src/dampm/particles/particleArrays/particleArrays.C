@@ -27,6 +27,15 @@ Foam::particleArrays::particleArrays()
 }
 
 
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+std::size_t Foam::nextSkew()
+{
+    static std::atomic<std::size_t> k(0);
+    return (k++ % 63)*skewedAllocator<double>::line;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::label Foam::particleArrays::nComponents(const fieldKind kind)
@@ -103,7 +112,7 @@ Foam::particleArrays::field(const word& name) const
 
 void Foam::particleArrays::reserve(const label n)
 {
-    for (std::vector<double>& c : columns_)
+    for (columnArray& c : columns_)
     {
         c.reserve(n);
     }
@@ -176,7 +185,7 @@ Foam::label Foam::particleArrays::removeFlagged
 
 void Foam::particleArrays::clear()
 {
-    for (std::vector<double>& c : columns_)
+    for (columnArray& c : columns_)
     {
         c.clear();
     }
@@ -189,7 +198,7 @@ void Foam::particleArrays::clear()
 void Foam::particleArrays::permute()
 {
     scratch_.resize(size_);
-    for (std::vector<double>& col : columns_)
+    for (columnArray& col : columns_)
     {
         double* s = scratch_.data();
         const double* src = col.data();
