@@ -27,15 +27,6 @@ Foam::particleArrays::particleArrays()
 }
 
 
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
-
-std::size_t Foam::nextSkew()
-{
-    static std::atomic<std::size_t> k(0);
-    return (k++ % 63)*skewedAllocator<double>::line;
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::label Foam::particleArrays::nComponents(const fieldKind kind)
