@@ -123,6 +123,46 @@ void Foam::bareTransport::gather(particleArrays& p, const label gradU)
 }
 
 
+void Foam::bareTransport::move
+(
+    particleArrays& p,
+    const label gradU,
+    const double dt
+)
+{
+    const label n = p.size();
+    double* x = p.column(particleArrays::X);
+    double* y = p.column(particleArrays::Y);
+    const double* ux = p.column(particleArrays::UX);
+    const double* uy = p.column(particleArrays::UY);
+    double* C[4] = {};
+    double* F[4] = {};
+    for (int k = 0; F_ >= 0 && k < 4; ++k)
+    {
+        C[k] = p.column(gradU + k);
+        F[k] = p.column(F_ + k);
+    }
+    auto loop = [&](auto footprints)
+    {
+        #pragma omp parallel for schedule(static)
+        for (label i = 0; i < n; ++i)
+        {
+            x[i] += dt*ux[i];
+            y[i] += dt*uy[i];
+            if (footprints())
+            {
+                advanceColumn
+                (
+                    dt, C[0][i], C[1][i], C[2][i], C[3][i],
+                    F[0][i], F[1][i], F[2][i], F[3][i]
+                );
+            }
+        }
+    };
+    F_ >= 0 ? loop(std::true_type()) : loop(std::false_type());
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::bareTransport::advect
@@ -155,18 +195,7 @@ void Foam::bareTransport::advect
     );
 
     gather(p, gradU);
-
-    const label n = p.size();
-    double* x = p.column(particleArrays::X);
-    double* y = p.column(particleArrays::Y);
-    const double* ux = p.column(particleArrays::UX);
-    const double* uy = p.column(particleArrays::UY);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        x[i] += dt*ux[i];
-        y[i] += dt*uy[i];
-    }
+    move(p, gradU, dt);
 }
 
 
@@ -188,30 +217,7 @@ void Foam::bareTransport::shallowWater(particleArrays& p, const double dt)
         g_, activeNodes_, nodes_, domainSides(), dt, massTol_, false
     );
     gather(p, gradU_);
-
-    const label n = p.size();
-    double* x = p.column(particleArrays::X);
-    double* y = p.column(particleArrays::Y);
-    const double* ux = p.column(particleArrays::UX);
-    const double* uy = p.column(particleArrays::UY);
-    double* C[4];
-    double* F[4];
-    for (int k = 0; k < 4; ++k)
-    {
-        C[k] = p.column(gradU_ + k);
-        F[k] = p.column(F_ + k);
-    }
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        x[i] += dt*ux[i];
-        y[i] += dt*uy[i];
-        advanceColumn
-        (
-            dt, C[0][i], C[1][i], C[2][i], C[3][i],
-            F[0][i], F[1][i], F[2][i], F[3][i]
-        );
-    }
+    move(p, gradU_, dt);
 }
 
 
