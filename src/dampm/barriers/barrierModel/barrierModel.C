@@ -431,6 +431,24 @@ void Foam::barrierModel::inside
 }
 
 
+void Foam::barrierModel::deeperThan
+(
+    const pointField& points,
+    const scalar depth,
+    boolList& in
+) const
+{
+    scalarField phi;
+    vectorField normal;
+    distance(points, phi, normal);
+    in.setSize(points.size());
+    forAll(points, i)
+    {
+        in[i] = phi[i] < -depth;
+    }
+}
+
+
 void Foam::barrierModel::guardInside
 (
     const pointField& points,
@@ -439,18 +457,58 @@ void Foam::barrierModel::guardInside
 {
     if (guardDepth_ > 0)
     {
-        scalarField phi;
-        vectorField normal;
-        distance(points, phi, normal);
-        in.setSize(points.size());
-        forAll(points, i)
-        {
-            in[i] = phi[i] < -guardDepth_;
-        }
+        deeperThan(points, guardDepth_, in);
     }
     else
     {
         inside(points, in);
+    }
+}
+
+
+void Foam::barrierModel::markEntered
+(
+    const gridGeometry& g,
+    const mpm3DParticles& p
+)
+{
+    // In chunks: bounded scratch, and a virtual call per chunk, not per
+    // particle. Only particles in a cell the barrier may occupy are tested
+    constexpr label chunk = 4096;
+    const label n = guardsParticles() ? label(p.n) : 0;
+    entered_.assign(n, 0);
+    const label nChunks = (n + chunk - 1)/chunk;
+    #pragma omp parallel for schedule(dynamic) if (threadSafeDistance())
+    for (label c = 0; c < nChunks; ++c)
+    {
+        const label first = c*chunk;
+        const label last = std::min(n, first + chunk);
+        label nNear = 0;
+        for (label i = first; i < last; ++i)
+        {
+            nNear += nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])];
+        }
+        if (!nNear)
+        {
+            continue;
+        }
+        labelList ids(nNear);
+        pointField pts(nNear);
+        nNear = 0;
+        for (label i = first; i < last; ++i)
+        {
+            if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
+            {
+                ids[nNear] = i;
+                pts[nNear++] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
+            }
+        }
+        boolList in;
+        guardInside(pts, in);
+        forAll(ids, k)
+        {
+            entered_[ids[k]] = in[k];
+        }
     }
 }
 
@@ -464,39 +522,24 @@ Foam::label Foam::barrierModel::stopEntries
     const scalar t
 )
 {
-    // Candidates: the particles that end the step in a cell the barrier may
-    // occupy, then those of them inside it that were outside at the start
+    // Candidates: the particles that end the step inside the barrier
+    // (beyond the guard's depth), then those of them that were outside at
+    // the start
+    markEntered(g, p);
     candidates_.clear();
-    const label nGuarded = guardsParticles() ? label(p.n) : 0;
-    for (label i = 0; i < nGuarded; ++i)
+    for (label i = 0; i < label(entered_.size()); ++i)
     {
-        if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
+        if (entered_[i])
         {
             candidates_.push_back(i);
         }
     }
     label nc = label(candidates_.size());
     double F[3] = {0, 0, 0};
-    pointField a, b(nc);
+    pointField a, b;
     if (nc)
     {
-        forAll(b, c)
-        {
-            const label i = candidates_[c];
-            b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
-        }
         boolList in;
-        guardInside(b, in);
-        label m = 0;
-        forAll(b, c)
-        {
-            if (in[c])
-            {
-                candidates_[m++] = candidates_[c];
-            }
-        }
-        nc = m;
-        candidates_.resize(nc);
         a.setSize(nc);
         b.setSize(nc);
         forAll(a, c)
@@ -506,7 +549,7 @@ Foam::label Foam::barrierModel::stopEntries
             b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
         }
         guardInside(a, in);
-        m = 0;
+        label m = 0;
         forAll(a, c)
         {
             if (!in[c])

@@ -53,6 +53,22 @@ Foam::barrierModels::terrainBarrier::terrainBarrier
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+inline Foam::scalar Foam::barrierModels::terrainBarrier::surface
+(
+    const scalar x,
+    const scalar y,
+    scalar& Zx,
+    scalar& Zy
+) const
+{
+    const scalar delta = 0.005;
+    const topographyModel& Z = *topography_;
+    Zx = (Z.Z(x + delta, y) - Z.Z(x - delta, y))/(2*delta);
+    Zy = (Z.Z(x, y + delta) - Z.Z(x, y - delta))/(2*delta);
+    return Z.Z(x, y);
+}
+
+
 void Foam::barrierModels::terrainBarrier::distance
 (
     const pointField& points,
@@ -60,19 +76,45 @@ void Foam::barrierModels::terrainBarrier::distance
     vectorField& normal
 ) const
 {
-    const scalar delta = 0.005;
-    const topographyModel& Z = *topography_;
     phi.setSize(points.size());
     normal.setSize(points.size());
 
-    forAll(points, i)
+    // Each point its own (Z is pure): on several threads when not called
+    // from a parallel region already
+    const label n = points.size();
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        scalar Zx, Zy;
+        const scalar Z0 = surface(points[i].x(), points[i].y(), Zx, Zy);
+        const scalar norm = std::sqrt(1 + Zx*Zx + Zy*Zy);
+        phi[i] = (points[i].z() - Z0)/norm;
+        normal[i] = vector(-Zx, -Zy, 1)/norm;
+    }
+}
+
+
+void Foam::barrierModels::terrainBarrier::deeperThan
+(
+    const pointField& points,
+    const scalar depth,
+    boolList& in
+) const
+{
+    in.setSize(points.size());
+    const topographyModel& Z = *topography_;
+    const label n = points.size();
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < n; ++i)
     {
         const scalar x = points[i].x(), y = points[i].y();
-        const scalar Zx = (Z.Z(x + delta, y) - Z.Z(x - delta, y))/(2*delta);
-        const scalar Zy = (Z.Z(x, y + delta) - Z.Z(x, y - delta))/(2*delta);
-        const scalar norm = std::sqrt(1 + Zx*Zx + Zy*Zy);
-        phi[i] = (points[i].z() - Z.Z(x, y))/norm;
-        normal[i] = vector(-Zx, -Zy, 1)/norm;
+        in[i] = points[i].z() - Z.Z(x, y) < -depth;
+        if (in[i])
+        {
+            scalar Zx, Zy;
+            const scalar Z0 = surface(x, y, Zx, Zy);
+            in[i] = (points[i].z() - Z0)/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
+        }
     }
 }
 

@@ -462,6 +462,11 @@ void Foam::mpm3dFlow::particlesToGrid()
     activeNodes_ = stencilNodes_;
     stencilNodes_ = particles_.stencilNodes(g);
     activeNodes_.unite(stencilNodes_);
+    std::swap(lastRows_, stencilRows_);
+    particles_.stencilRows(g, schedule_.maxStale(), stencilRows_);
+    activeRows_.unite(lastRows_, stencilRows_);
+    stencilNodes_.rows = &stencilRows_;
+    activeNodes_.rows = &activeRows_;
     zeroNodes3D(g, activeNodes_, nodes_);
 
     const mpm3DParticles view = kernelView();

@@ -246,6 +246,61 @@ Foam::nodeBox Foam::particleArrays::stencilNodes
 }
 
 
+void Foam::particleArrays::stencilRows
+(
+    const gridGeometry& g,
+    const label maxStale,
+    nodeRowSpans& rows
+) const
+{
+    typedef gridGeometry::index index;
+    const index nG = gridGeometry::nGhost;
+    const index nRows = g.nNodesDir[1]*g.nNodesDir[2];
+    rows.lo.assign(nRows, g.nNodesDir[0]);
+    rows.hi.assign(nRows, 0);
+
+    // A particle binned in cell c is within maxStale cells of it, and its
+    // stencil reaches from node c - 1 to c + 2 per axis (stencilBox)
+    const index below = maxStale + 1 - nG, above = maxStale + 2 + nG;
+    const index nx = g.nCells[0];
+    const auto clip = [](const index i, const index n)
+    {
+        return i < 0 ? 0 : (i > n ? n : i);
+    };
+    for (index k = 0; k < g.nCells[2]; ++k)
+    {
+        for (index j = 0; j < g.nCells[1]; ++j)
+        {
+            // A cell row's particles are contiguous, sorted by cell
+            const index row0 = g.cellIndex(0, j, k);
+            const label first = cellStart_[row0];
+            const label last = cellStart_[row0 + nx];
+            if (first == last)
+            {
+                continue;
+            }
+            const index lo = clip(cell_[first] - row0 - below, g.nNodesDir[0]);
+            const index hi =
+                clip(cell_[last - 1] - row0 + above + 1, g.nNodesDir[0]);
+            const index k0 = g.dim == 3 ? clip(k - below, g.nNodesDir[2]) : 0;
+            const index k1 =
+                g.dim == 3 ? clip(k + above + 1, g.nNodesDir[2]) : 1;
+            const index j0 = clip(j - below, g.nNodesDir[1]);
+            const index j1 = clip(j + above + 1, g.nNodesDir[1]);
+            for (index kk = k0; kk < k1; ++kk)
+            {
+                for (index jj = j0; jj < j1; ++jj)
+                {
+                    const index r = jj + g.nNodesDir[1]*kk;
+                    rows.lo[r] = lo < rows.lo[r] ? lo : rows.lo[r];
+                    rows.hi[r] = hi > rows.hi[r] ? hi : rows.hi[r];
+                }
+            }
+        }
+    }
+}
+
+
 bool Foam::particleArrays::finite(const std::vector<label>& columns) const
 {
     const label n = size_;
