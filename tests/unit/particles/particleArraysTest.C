@@ -7,12 +7,15 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    particleArrays: fields, append, stable removal, and the counting sort by
-    cell that keeps every field of a particle together.
+    particleArrays: fields, append, stable removal, the counting sort by
+    cell that keeps every field of a particle together, and the node rows'
+    spans the particles' stencils touch.
 
 \*---------------------------------------------------------------------------*/
 
 #include "particleArrays.H"
+#include "shapeKernels.H"
+#include "stencil.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
 #include <random>
@@ -149,6 +152,98 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
     {
         EXPECT_LE(p.cell()[i - 1], p.cell()[i]);
     }
+}
+
+
+// Every node of every particle's stencil lies in its row's span, particles
+// up to maxStale cells from their bins included, and a sheet of particles
+// (a flow over a slope in a 3D box) leaves most of its box out
+TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
+{
+    gridGeometry g;
+    g.dx[0] = g.dx[1] = g.dx[2] = 0.25;
+    g.nCells[0] = 40;
+    g.nCells[1] = 12;
+    g.nCells[2] = 30;
+    g.finalise();
+    const label maxStale = 1;
+
+    // A layer a cell thick over the slope z = 0.5 + 0.6 x
+    particleArrays p;
+    const label n = 20000;
+    p.append(n);
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    double* x[3] =
+    {
+        p.column(particleArrays::X),
+        p.column(particleArrays::Y),
+        p.column(particleArrays::Z)
+    };
+    for (label i = 0; i < n; ++i)
+    {
+        x[0][i] = u(gen)*g.upper(0);
+        x[1][i] = u(gen)*g.upper(1);
+        x[2][i] = 0.5 + 0.6*x[0][i] + 0.25*u(gen);
+    }
+    EXPECT_TRUE(p.sortByCell(g, maxStale));
+
+    // Moved by up to 0.9 cells per axis: still in their bins' reach (the
+    // sort moved the columns: their addresses again)
+    for (int d = 0; d < 3; ++d)
+    {
+        x[d] = p.column(particleArrays::X + d);
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            x[d][i] = std::min
+            (
+                std::max(x[d][i] + 0.9*g.dx[d]*(2*u(gen) - 1), 0.0),
+                g.upper(d)
+            );
+        }
+    }
+    EXPECT_FALSE(p.sortByCell(g, maxStale));
+
+    nodeRowSpans rows;
+    p.stencilRows(g, maxStale, rows);
+    ASSERT_EQ(label(rows.lo.size()), label(g.nNodesDir[1]*g.nNodesDir[2]));
+    label outside = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const stencil<3, quadraticBSplineKernel> s
+        (
+            g, quadraticBSplineKernel(), x[0][i], x[1][i], x[2][i]
+        );
+        s.forEachNode
+        (
+            [&](label nodei, double, const double*, const double*)
+            {
+                const label row = nodei/g.nodeStride[1];
+                const label along = nodei % g.nodeStride[1];
+                outside += along < rows.lo[row] || along >= rows.hi[row];
+            }
+        );
+    }
+    EXPECT_EQ(outside, 0);
+
+    // The spans cover a fraction of the particles' box of nodes
+    const nodeBox box = p.stencilNodes(g);
+    double inSpans = 0, inBox = 0;
+    for (label k = box.lo[2]; k < box.hi[2]; ++k)
+    {
+        for (label j = box.lo[1]; j < box.hi[1]; ++j)
+        {
+            const label row = j + g.nNodesDir[1]*k;
+            inSpans += std::max(0, rows.hi[row] - rows.lo[row]);
+            inBox += box.hi[0] - box.lo[0];
+        }
+    }
+    std::cout << "span nodes " << inSpans << " of " << inBox << " in the box"
+        << std::endl;
+    EXPECT_LT(inSpans, 0.5*inBox);
 }
 
 
