@@ -420,14 +420,7 @@ void Foam::barrierModel::inside
     boolList& in
 ) const
 {
-    scalarField phi;
-    vectorField normal;
-    distance(points, phi, normal);
-    in.setSize(points.size());
-    forAll(points, i)
-    {
-        in[i] = phi[i] < 0;
-    }
+    deeperThan(points, 0, in);
 }
 
 
