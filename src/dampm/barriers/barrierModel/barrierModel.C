@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "barrierModel.H"
+#include "DynamicField.H"
 #include "orderedSums.H"
 #include <algorithm>
 #include <numeric>
@@ -476,25 +477,19 @@ void Foam::barrierModel::markEntered
     {
         const label first = c*chunk;
         const label last = std::min(n, first + chunk);
-        label nNear = 0;
-        for (label i = first; i < last; ++i)
-        {
-            nNear += nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])];
-        }
-        if (!nNear)
-        {
-            continue;
-        }
-        labelList ids(nNear);
-        pointField pts(nNear);
-        nNear = 0;
+        DynamicList<label> ids(last - first);
+        DynamicField<point> pts(last - first);
         for (label i = first; i < last; ++i)
         {
             if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
             {
-                ids[nNear] = i;
-                pts[nNear++] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
+                ids.append(i);
+                pts.append(point(p.x[0][i], p.x[1][i], p.x[2][i]));
             }
+        }
+        if (ids.empty())
+        {
+            continue;
         }
         boolList in;
         guardInside(pts, in);
