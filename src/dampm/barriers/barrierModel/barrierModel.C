@@ -469,7 +469,7 @@ void Foam::barrierModel::markEntered
     // In chunks: bounded scratch, and a virtual call per chunk, not per
     // particle. Only particles in a cell the barrier may occupy are tested
     constexpr label chunk = 4096;
-    const label n = guardsParticles() ? label(p.n) : 0;
+    const label n = p.n;
     entered_.assign(n, 0);
     const label nChunks = (n + chunk - 1)/chunk;
     #pragma omp parallel for schedule(dynamic) if (threadSafeDistance())

@@ -562,13 +562,8 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
     const mpm3DParticles view = kernelView();
     const label n = particles_.size();
     const double* x0[3] = {nullptr, nullptr, nullptr};
-    // The start positions, for the guard of the barriers that have one
-    bool guarded = false;
-    for (const barrierModel& b : barriers_)
-    {
-        guarded = guarded || b.guardsParticles();
-    }
-    if (guarded)
+    // The start positions, for the barriers' guard
+    if (!barriers_.empty())
     {
         for (int d = 0; d < 3; ++d)
         {
