@@ -12,6 +12,8 @@ License
 #include "DynamicField.H"
 #include "orderedSums.H"
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -64,6 +66,13 @@ inline void contactVelocity
     {
         v[d] = keep*vt[d];
     }
+}
+
+//- The largest float not above x: a lower bound kept in single precision
+inline float floatBelow(const double x)
+{
+    const float f = float(x);
+    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::max()) : f;
 }
 
 } // End anonymous namespace
@@ -135,6 +144,13 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         sqr(g.dx[0]) + sqr(g.dx[1]) + sqr(g.dx[2])
     );
     nearCell_.assign(g.nCellsTotal(), 0);
+    // Nodes outside the searched box are farther than the band from the
+    // barrier: the band bounds their distance from below
+    nodePhi_.clear();
+    if (exactDistance())
+    {
+        nodePhi_.assign(g.nNodes(), float(band));
+    }
     guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
 
     const boundBox bb = bounds();
@@ -191,6 +207,10 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         distance(pointField(pts), phi, nrm);
         forAll(pts, pi)
         {
+            if (!nodePhi_.empty())
+            {
+                nodePhi_[ids[pi]] = floatBelow(phi[pi]);
+            }
             if (phi[pi] <= nearCellDistance)
             {
                 // The (up to) eight cells around the node
@@ -460,6 +480,37 @@ void Foam::barrierModel::guardInside
 }
 
 
+inline bool Foam::barrierModel::mayBeDeep
+(
+    const gridGeometry& g,
+    const double x,
+    const double y,
+    const double z
+) const
+{
+    if (nodePhi_.empty())
+    {
+        return true;
+    }
+    const double xyz[3] = {x, y, z};
+    gridGeometry::index ijk[3];
+    double r2 = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const double l = std::min
+        (
+            std::max(std::round(g.local(d, xyz[d])), 0.0),
+            double(g.nCells[d])
+        );
+        ijk[d] = gridGeometry::index(l);
+        r2 += sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
+    }
+    // phi >= nodePhi - r; the margin covers the rounding of r
+    const double r = std::sqrt(r2)*(1 + 1e-12) + 1e-12*g.dx[0];
+    return nodePhi_[g.nodeIndex(ijk[0], ijk[1], ijk[2])] - r < -guardDepth_;
+}
+
+
 void Foam::barrierModel::markEntered
 (
     const gridGeometry& g,
@@ -481,7 +532,8 @@ void Foam::barrierModel::markEntered
         DynamicField<point> pts(last - first);
         for (label i = first; i < last; ++i)
         {
-            if (nearCell_[g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i])])
+            const double x = p.x[0][i], y = p.x[1][i], z = p.x[2][i];
+            if (nearCell_[g.cellOf(x, y, z)] && mayBeDeep(g, x, y, z))
             {
                 ids.append(i);
                 pts.append(point(p.x[0][i], p.x[1][i], p.x[2][i]));

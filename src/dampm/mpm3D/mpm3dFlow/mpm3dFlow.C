@@ -568,8 +568,14 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
         for (int d = 0; d < 3; ++d)
         {
             const double* x = particles_.column(particleArrays::X + d);
-            xOld_[d].assign(x, x + n);
-            x0[d] = xOld_[d].data();
+            xOld_[d].resize(n);
+            double* xo = xOld_[d].data();
+            #pragma omp parallel for schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                xo[i] = x[i];
+            }
+            x0[d] = xo;
         }
     }
     visitShape
