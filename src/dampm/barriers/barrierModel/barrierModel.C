@@ -96,6 +96,9 @@ Foam::barrierModel::barrierModel
     overtopDir_(Zero),
     nStopped_(0),
     guardDepth_(0),
+    nearLo_{0, 0, 0},
+    nearHi_{-1, -1, -1},
+    reached_(true),
     runUp_(-GREAT),
     maxRunUp_(-GREAT),
     passLevel_(GREAT),
@@ -144,6 +147,11 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         sqr(g.dx[0]) + sqr(g.dx[1]) + sqr(g.dx[2])
     );
     nearCell_.assign(g.nCellsTotal(), 0);
+    for (int d = 0; d < 3; ++d)
+    {
+        nearLo_[d] = g.nCells[d];
+        nearHi_[d] = -1;
+    }
     // Nodes outside the searched box are farther than the band from the
     // barrier: the band bounds their distance from below
     nodePhi_.clear();
@@ -229,6 +237,12 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
                     )
                     {
                         nearCell_[g.cellIndex(ci, cj, ck)] = 1;
+                        const gridGeometry::index c[3] = {ci, cj, ck};
+                        for (int d = 0; d < 3; ++d)
+                        {
+                            nearLo_[d] = min(nearLo_[d], c[d]);
+                            nearHi_[d] = max(nearHi_[d], c[d]);
+                        }
                     }
                 }
             }
@@ -553,6 +567,23 @@ void Foam::barrierModel::markEntered
 }
 
 
+bool Foam::barrierModel::guardReach(const nodeBox& particleNodes)
+{
+    // The particles lie between the box's first and last nodes; the cells
+    // they can reach, two cells further
+    reached_ = !particleNodes.empty();
+    for (int d = 0; d < 3 && reached_; ++d)
+    {
+        const gridGeometry::index first =
+            particleNodes.lo[d] - gridGeometry::nGhost - 2;
+        const gridGeometry::index last =
+            particleNodes.hi[d] - 1 - gridGeometry::nGhost + 2;
+        reached_ = nearLo_[d] <= last && nearHi_[d] + 1 >= first;
+    }
+    return reached_;
+}
+
+
 Foam::label Foam::barrierModel::stopEntries
 (
     const gridGeometry& g,
@@ -565,7 +596,14 @@ Foam::label Foam::barrierModel::stopEntries
     // Candidates: the particles that end the step inside the barrier
     // (beyond the guard's depth), then those of them that were outside at
     // the start
-    markEntered(g, p);
+    if (reached_)
+    {
+        markEntered(g, p);
+    }
+    else
+    {
+        entered_.clear();
+    }
     candidates_.clear();
     for (label i = 0; i < label(entered_.size()); ++i)
     {

@@ -562,8 +562,14 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
     const mpm3DParticles view = kernelView();
     const label n = particles_.size();
     const double* x0[3] = {nullptr, nullptr, nullptr};
-    // The start positions, for the barriers' guard
-    if (!barriers_.empty())
+    // The start positions, for the guard of the barriers the particles can
+    // reach in this step
+    bool guarded = false;
+    for (barrierModel& b : barriers_)
+    {
+        guarded = b.guardReach(stencilNodes_) || guarded;
+    }
+    if (guarded)
     {
         for (int d = 0; d < 3; ++d)
         {
