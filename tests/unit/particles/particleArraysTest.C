@@ -18,6 +18,8 @@ Description
 #include "stencil.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
+#include <limits>
+#include <numeric>
 #include <random>
 
 using namespace Foam;
@@ -86,6 +88,39 @@ TEST(particleArrays, AppendedParticlesTakeTheFieldsInitialValue)
     EXPECT_EQ(p.column(h)[0], 7);
     EXPECT_EQ(p.column(h)[4], 2.5);
     EXPECT_EQ(p.column(particleArrays::M)[4], 0);
+}
+
+
+TEST(particleArrays, FiniteFindsOneNaNOrInfinityInAnyColumn)
+{
+    const gridGeometry g = grid2D();
+    particleArrays p = randomParticles(g, 1001);
+    std::vector<label> all(p.nColumns());
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_TRUE(p.finite(all));
+    const double bad[3] =
+    {
+        std::numeric_limits<double>::quiet_NaN(),
+        std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()
+    };
+    for (const double b : bad)
+    {
+        for (const label c : {label(particleArrays::X), all.back()})
+        {
+            for (const label i : {label(0), label(500), label(1000)})
+            {
+                const double keep = p.column(c)[i];
+                p.column(c)[i] = b;
+                EXPECT_FALSE(p.finite(all)) << "value " << b << " column " << c << " particle " << i;
+                EXPECT_TRUE(p.finite({particleArrays::M})) << "a column without it";
+                p.column(c)[i] = keep;
+            }
+        }
+    }
+    // Large finite values are finite
+    p.column(particleArrays::M)[7] = std::numeric_limits<double>::max();
+    EXPECT_TRUE(p.finite(all));
 }
 
 

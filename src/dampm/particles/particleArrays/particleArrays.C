@@ -303,18 +303,20 @@ void Foam::particleArrays::stencilRows
 
 bool Foam::particleArrays::finite(const std::vector<label>& columns) const
 {
+    // v - v is 0 for a finite v and NaN for an infinite or NaN one: a sum
+    // with no branch, which vectorises (every step, over every column)
     const label n = size_;
-    bool ok = true;
+    double sum = 0;
     for (const label c : columns)
     {
         const double* v = column(c);
-        #pragma omp parallel for schedule(static) reduction(&&:ok)
+        #pragma omp parallel for schedule(static) reduction(+:sum)
         for (label i = 0; i < n; ++i)
         {
-            ok = ok && std::isfinite(v[i]);
+            sum += v[i] - v[i];
         }
     }
-    return ok;
+    return sum == 0;
 }
 
 
