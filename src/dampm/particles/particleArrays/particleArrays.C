@@ -12,6 +12,7 @@ License
 #include <cmath>
 #include "error.H"
 #include <algorithm>
+#include <limits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -303,20 +304,21 @@ void Foam::particleArrays::stencilRows
 
 bool Foam::particleArrays::finite(const std::vector<label>& columns) const
 {
-    // v - v is 0 for a finite v and NaN for an infinite or NaN one: a sum
-    // with no branch, which vectorises (every step, over every column)
+    // A count with no branch per value, which vectorises (every step, over
+    // every column): |v| <= max is false for infinities and NaN
     const label n = size_;
-    double sum = 0;
+    const double big = std::numeric_limits<double>::max();
+    label nBad = 0;
     for (const label c : columns)
     {
         const double* v = column(c);
-        #pragma omp parallel for schedule(static) reduction(+:sum)
+        #pragma omp parallel for schedule(static) reduction(+:nBad)
         for (label i = 0; i < n; ++i)
         {
-            sum += v[i] - v[i];
+            nBad += !(std::abs(v[i]) <= big);
         }
     }
-    return sum == 0;
+    return nBad == 0;
 }
 
 
