@@ -112,8 +112,10 @@ TEST(particleArrays, FiniteFindsOneNaNOrInfinityInAnyColumn)
             {
                 const double keep = p.column(c)[i];
                 p.column(c)[i] = b;
-                EXPECT_FALSE(p.finite(all)) << "value " << b << " column " << c << " particle " << i;
-                EXPECT_TRUE(p.finite({particleArrays::M})) << "a column without it";
+                EXPECT_FALSE(p.finite(all))
+                    << "value " << b << " column " << c << " particle " << i;
+                EXPECT_TRUE(p.finite({particleArrays::M}))
+                    << "a column without it";
                 p.column(c)[i] = keep;
             }
         }

@@ -72,7 +72,9 @@ inline void contactVelocity
 inline float floatBelow(const double x)
 {
     const float f = float(x);
-    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::max()) : f;
+    return double(f) > x
+        ? std::nextafter(f, -std::numeric_limits<float>::max())
+        : f;
 }
 
 } // End anonymous namespace
@@ -157,7 +159,7 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
     nodePhi_.clear();
     if (exactDistance())
     {
-        nodePhi_.assign(g.nNodes(), float(band));
+        nodePhi_.assign(g.nNodes(), floatBelow(band));
     }
     guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
 
@@ -169,7 +171,8 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
     for (int d = 0; d < 3; ++d)
     {
         const scalar l = max((lo[d] - g.origin[d])*g.invDx[d], -2.0);
-        const scalar u = min((hi[d] - g.origin[d])*g.invDx[d], g.nCells[d] + 2.0);
+        const scalar u =
+            min((hi[d] - g.origin[d])*g.invDx[d], g.nCells[d] + 2.0);
         first[d] = gridGeometry::index(std::ceil(l)) + gridGeometry::nGhost;
         last[d] = gridGeometry::index(std::floor(u)) + gridGeometry::nGhost + 1;
         first[d] = max(first[d], 0);
@@ -494,7 +497,7 @@ void Foam::barrierModel::guardInside
 }
 
 
-inline bool Foam::barrierModel::mayBeDeep
+bool Foam::barrierModel::mayBeDeep
 (
     const gridGeometry& g,
     const double x,
@@ -502,7 +505,8 @@ inline bool Foam::barrierModel::mayBeDeep
     const double z
 ) const
 {
-    if (nodePhi_.empty())
+    // A non-finite position has no nearest node: the exact test answers
+    if (nodePhi_.empty() || !std::isfinite(x + y + z))
     {
         return true;
     }
@@ -519,8 +523,10 @@ inline bool Foam::barrierModel::mayBeDeep
         ijk[d] = gridGeometry::index(l);
         r2 += sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
     }
-    // phi >= nodePhi - r; the margin covers the rounding of r
-    const double r = std::sqrt(r2)*(1 + 1e-12) + 1e-12*g.dx[0];
+    // phi >= nodePhi - r; the margin covers the rounding of r and of the
+    // distances, which grows with the coordinates (1e-10 m at 1e6 m)
+    const double h = min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    const double r = std::sqrt(r2) + 1e-6*h;
     return nodePhi_[g.nodeIndex(ijk[0], ijk[1], ijk[2])] - r < -guardDepth_;
 }
 
@@ -571,7 +577,7 @@ bool Foam::barrierModel::guardReach(const nodeBox& particleNodes)
 {
     // The particles lie between the box's first and last nodes; the cells
     // they can reach, two cells further
-    reached_ = !particleNodes.empty();
+    reached_ = !particleNodes.empty() && nearLo_[0] <= nearHi_[0];
     for (int d = 0; d < 3 && reached_; ++d)
     {
         const gridGeometry::index first =
@@ -698,6 +704,9 @@ Foam::label Foam::barrierModel::stopEntries
         }
         nStopped_ += nc;
     }
+
+    // Until the next guardReach, check every particle (fail safe)
+    reached_ = true;
 
     force_ += vector(F[0], F[1], F[2]);
     if (mag(force_) > peakForce_)

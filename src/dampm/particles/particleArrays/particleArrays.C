@@ -308,17 +308,21 @@ bool Foam::particleArrays::finite(const std::vector<label>& columns) const
     // every column): |v| <= max is false for infinities and NaN
     const label n = size_;
     const double big = std::numeric_limits<double>::max();
-    label nBad = 0;
     for (const label c : columns)
     {
         const double* v = column(c);
+        label nBad = 0;
         #pragma omp parallel for schedule(static) reduction(+:nBad)
         for (label i = 0; i < n; ++i)
         {
             nBad += !(std::abs(v[i]) <= big);
         }
+        if (nBad)
+        {
+            return false;
+        }
     }
-    return nBad == 0;
+    return true;
 }
 
 
