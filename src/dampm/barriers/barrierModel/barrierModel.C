@@ -154,14 +154,18 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         nearLo_[d] = g.nCells[d];
         nearHi_[d] = -1;
     }
-    // Nodes outside the searched box are farther than the band from the
-    // barrier: the band bounds their distance from below
-    nodePhi_.clear();
+    guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    // The screen's clearance phi + guardDepth - margin; the margin covers
+    // the rounding of the distances, which grows with the coordinates
+    // (1e-10 m at 1e6 m). Nodes outside the searched box are farther than
+    // the band from the barrier: the band bounds their distance from below
+    const scalar clearance =
+        guardDepth_ - 1e-6*min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    nodeClearance_.clear();
     if (exactDistance())
     {
-        nodePhi_.assign(g.nNodes(), floatBelow(band));
+        nodeClearance_.assign(g.nNodes(), floatBelow(band + clearance));
     }
-    guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
 
     const boundBox bb = bounds();
     const point lo = bb.min() - vector::uniform(band);
@@ -218,9 +222,9 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         distance(pointField(pts), phi, nrm);
         forAll(pts, pi)
         {
-            if (!nodePhi_.empty())
+            if (!nodeClearance_.empty())
             {
-                nodePhi_[ids[pi]] = floatBelow(phi[pi]);
+                nodeClearance_[ids[pi]] = floatBelow(phi[pi] + clearance);
             }
             if (phi[pi] <= nearCellDistance)
             {
@@ -506,7 +510,7 @@ bool Foam::barrierModel::mayBeDeep
 ) const
 {
     // A non-finite position has no nearest node: the exact test answers
-    if (nodePhi_.empty() || !std::isfinite(x + y + z))
+    if (nodeClearance_.empty() || !std::isfinite(x + y + z))
     {
         return true;
     }
@@ -523,11 +527,11 @@ bool Foam::barrierModel::mayBeDeep
         ijk[d] = gridGeometry::index(l);
         r2 += sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
     }
-    // phi >= nodePhi - r; the margin covers the rounding of r and of the
-    // distances, which grows with the coordinates (1e-10 m at 1e6 m)
-    const double h = min(min(g.dx[0], g.dx[1]), g.dx[2]);
-    const double r = std::sqrt(r2) + 1e-6*h;
-    return nodePhi_[g.nodeIndex(ijk[0], ijk[1], ijk[2])] - r < -guardDepth_;
+    // phi >= phi_n - r: not deeper than the guard's depth while the node's
+    // clearance phi_n + guardDepth (less the margin) is at least r
+    return
+        nodeClearance_[g.nodeIndex(ijk[0], ijk[1], ijk[2])]
+      < std::sqrt(r2);
 }
 
 
@@ -538,25 +542,26 @@ void Foam::barrierModel::markEntered
 )
 {
     // In chunks: bounded scratch, and a virtual call per chunk, not per
-    // particle. Only particles in a cell the barrier may occupy are tested
+    // particle. Only particles in a cell the barrier may occupy are tested;
+    // each chunk keeps those inside, joined in storage order
     constexpr label chunk = 4096;
     const label n = p.n;
-    entered_.assign(n, 0);
     const label nChunks = (n + chunk - 1)/chunk;
+    List<DynamicList<label>> inside(nChunks);
     #pragma omp parallel for schedule(dynamic) if (threadSafeDistance())
     for (label c = 0; c < nChunks; ++c)
     {
         const label first = c*chunk;
         const label last = std::min(n, first + chunk);
-        DynamicList<label> ids(last - first);
-        DynamicField<point> pts(last - first);
+        DynamicList<label>& ids = inside[c];
+        DynamicField<point> pts;
         for (label i = first; i < last; ++i)
         {
             const double x = p.x[0][i], y = p.x[1][i], z = p.x[2][i];
             if (nearCell_[g.cellOf(x, y, z)] && mayBeDeep(g, x, y, z))
             {
                 ids.append(i);
-                pts.append(point(p.x[0][i], p.x[1][i], p.x[2][i]));
+                pts.append(point(x, y, z));
             }
         }
         if (ids.empty())
@@ -565,10 +570,19 @@ void Foam::barrierModel::markEntered
         }
         boolList in;
         guardInside(pts, in);
+        label m = 0;
         forAll(ids, k)
         {
-            entered_[ids[k]] = in[k];
+            if (in[k])
+            {
+                ids[m++] = ids[k];
+            }
         }
+        ids.resize(m);
+    }
+    for (const DynamicList<label>& ids : inside)
+    {
+        candidates_.insert(candidates_.end(), ids.begin(), ids.end());
     }
 }
 
@@ -602,21 +616,10 @@ Foam::label Foam::barrierModel::stopEntries
     // Candidates: the particles that end the step inside the barrier
     // (beyond the guard's depth), then those of them that were outside at
     // the start
+    candidates_.clear();
     if (reached_)
     {
         markEntered(g, p);
-    }
-    else
-    {
-        entered_.clear();
-    }
-    candidates_.clear();
-    for (label i = 0; i < label(entered_.size()); ++i)
-    {
-        if (entered_[i])
-        {
-            candidates_.push_back(i);
-        }
     }
     label nc = label(candidates_.size());
     double F[3] = {0, 0, 0};
