@@ -30,6 +30,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "mpmTime.H"
+#include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
 #include "depthAveragedFlow.H"
@@ -49,7 +51,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
-    #include "createTime.H"
+    #include "createMPMTime.H"
     #include "createMesh.H"
     #include "createFields.H"
 
@@ -116,7 +118,8 @@ int main(int argc, char *argv[])
     timers.report(Info);
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero when a signal stopped the run before endTime
+    return runTime.exitCode();
 }
 
 

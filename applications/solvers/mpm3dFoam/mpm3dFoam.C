@@ -33,6 +33,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "mpmTime.H"
+#include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
 #include "mpm3dFlow.H"
@@ -51,7 +53,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
-    #include "createTime.H"
+    #include "createMPMTime.H"
     #include "createMesh.H"
     #include "createFields.H"
 
@@ -98,7 +100,8 @@ int main(int argc, char *argv[])
     timers.report(Info);
     Info<< "End\n" << endl;
 
-    return 0;
+    // Non-zero when a signal stopped the run before endTime
+    return runTime.exitCode();
 }
 
 

@@ -42,6 +42,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "mpmTime.H"
 #include "mpmGrid.H"
 #include "depthAveragedFlow.H"
 #include "mpm3dFlow.H"
@@ -91,7 +92,11 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
-    #include "createTime.H"
+
+    // The 3D case's time: it writes the start of the 3D run as a complete
+    // time directory, whatever that time held before
+    Info<< "Create time\n" << endl;
+    mpmTime runTime(Time::controlDictName, args, false);
     #include "createMesh.H"
 
     #include "createSourceCase.H"

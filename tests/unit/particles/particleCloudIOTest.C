@@ -27,9 +27,6 @@ using namespace Foam;
 namespace
 {
 
-// Values are written with at least 12 significant digits
-constexpr double ioTol = 1e-10;
-
 // foamToVTK's ASCII output: 6 significant digits (relative)
 constexpr double vtkTol = 1e-5;
 
@@ -60,6 +57,7 @@ particleArrays makeCloud(const label n)
         p.column(particleArrays::UX)[i] = u(gen) - 0.5;
         p.column(particleArrays::UY)[i] = 2*u(gen);
         p.column(particleArrays::M)[i] = 1000*u(gen);
+        p.column(particleArrays::VOL)[i] = u(gen);
         p.column(h)[i] = 1.0/3.0 + i;
     }
     return p;
@@ -139,38 +137,129 @@ TEST(particleCloudIOCase, FoamToVTKShowsEveryParticleWithItsFields)
 }
 
 
-TEST(particleCloudIOCase, CloudReadsBackUnchanged)
+// A cloud written at a time of a case, in a format
+particleArrays writeCloud
+(
+    testCase& tc,
+    const scalar t,
+    const particleArrays& p,
+    const IOstream::streamFormat fmt
+)
+{
+    tc.runTime().setTime(t, 1);
+    const mpmGrid grid(tc.mesh());
+    particleCloudIO cloudIO("mpmCloud", p, grid);
+    EXPECT_TRUE
+    (
+        cloudIO.writeObject
+        (
+            fmt, IOstream::currentVersion, IOstream::UNCOMPRESSED, true
+        )
+    );
+    particleArrays q;
+    q.addField("h", particleArrays::fieldKind::scalar);
+    particleCloudIO::read(q, tc.mesh(), "mpmCloud", tc.runTime().timeName());
+    return q;
+}
+
+
+TEST(particleCloudIOCase, CloudReadsBackBitForBitInAsciiAndBinary)
 {
     const fileName dir = freshCase("cloudReadCase");
     testCase tc(dir);
-    tc.runTime().setTime(1.25, 1);
-    const mpmGrid grid(tc.mesh());
+    // ASCII at writePrecision 6: the cloud is still written exactly
+    IOstream::defaultPrecision(6);
     const particleArrays p = makeCloud(50);
-    particleCloudIO cloudIO("mpmCloud", p, grid);
-    ASSERT_TRUE(cloudIO.write());
-    ASSERT_TRUE(particleCloudIO::found(tc.mesh(), "mpmCloud", "1.25"));
-
-    particleArrays q;
-    q.addField("h", particleArrays::fieldKind::scalar);
-    q.addField("notWritten", particleArrays::fieldKind::scalar, -1);
-    const wordList missing =
-        particleCloudIO::read(q, tc.mesh(), "mpmCloud", "1.25");
-    ASSERT_EQ(q.size(), p.size());
-    ASSERT_EQ(missing.size(), 1);
-    EXPECT_EQ(missing[0], "notWritten");
-    for (label c = 0; c <= particleArrays::VOL; ++c)
+    for (const IOstream::streamFormat fmt : {IOstream::ASCII, IOstream::BINARY})
     {
+        const particleArrays q =
+            writeCloud(tc, fmt == IOstream::ASCII ? 1.25 : 1.5, p, fmt);
+        ASSERT_EQ(q.size(), p.size());
+        for (label c = 0; c <= particleArrays::VOL; ++c)
+        {
+            for (label i = 0; i < p.size(); ++i)
+            {
+                EXPECT_EQ(q.column(c)[i], p.column(c)[i])
+                    << "column " << c << ", particle " << i;
+            }
+        }
         for (label i = 0; i < p.size(); ++i)
         {
-            EXPECT_NEAR(q.column(c)[i], p.column(c)[i],
-                ioTol*(1 + std::abs(p.column(c)[i])));
+            EXPECT_EQ(q.column(q.field("h").first)[i],
+                p.column(p.field("h").first)[i]);
         }
     }
-    for (label i = 0; i < p.size(); ++i)
+    // The binary file is binary (OpenFOAM's header says so)
+    std::ifstream is(dir/"1.5"/"lagrangian"/"mpmCloud"/"positions");
+    const std::string text
+    (
+        (std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>()
+    );
+    EXPECT_NE(text.find("format      binary"), std::string::npos);
+}
+
+
+TEST(particleCloudIOCase, MissingFieldShortListAndBadValuesAreRefused)
+{
+    const fileName dir = freshCase("cloudBadCase");
+    testCase tc(dir);
+    const particleArrays p = makeCloud(20);
+    writeCloud(tc, 2, p, IOstream::ASCII);
+    const fileName cloud = dir/"2"/"lagrangian"/"mpmCloud";
+
+    // A field the particles have but the cloud lacks
+    particleArrays q;
+    q.addField("h", particleArrays::fieldKind::scalar);
+    q.addField("notWritten", particleArrays::fieldKind::scalar);
+    try
     {
-        EXPECT_NEAR(q.column(q.field("h").first)[i],
-            p.column(p.field("h").first)[i], ioTol*(1 + i));
-        EXPECT_EQ(q.column(q.field("notWritten").first)[i], -1);
+        particleCloudIO::read(q, tc.mesh(), "mpmCloud", "2");
+        ADD_FAILURE() << "a missing field was accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        EXPECT_NE(e.message().find("notWritten"), std::string::npos)
+            << e.message();
+    }
+
+    // A field one value short
+    {
+        std::ifstream is(cloud/"h");
+        std::string text
+        (
+            (std::istreambuf_iterator<char>(is)),
+            std::istreambuf_iterator<char>()
+        );
+        const std::size_t last = text.rfind(')');
+        const std::size_t cut = text.rfind('\n', text.rfind('\n', last) - 1);
+        text.erase(cut, text.rfind('\n', last) - cut);
+        std::ofstream(cloud/"h") << text;
+    }
+    particleArrays r;
+    r.addField("h", particleArrays::fieldKind::scalar);
+    EXPECT_THROW
+    (
+        particleCloudIO::read(r, tc.mesh(), "mpmCloud", "2"),
+        Foam::error
+    );
+
+    // Negative mass, a speed above maxSpeed, a particle outside the mesh
+    const mpmGrid grid(tc.mesh());
+    for (const label c : {particleArrays::M, particleArrays::UX,
+        particleArrays::X})
+    {
+        particleArrays bad(p);
+        bad.column(c)[7] = c == particleArrays::M ? -1 : 1e200;
+        try
+        {
+            particleCloudIO::checkCloud(bad, grid, cloud);
+            ADD_FAILURE() << "column " << c << " was accepted";
+        }
+        catch (const Foam::error& e)
+        {
+            EXPECT_NE(e.message().find("particle 7"), std::string::npos)
+                << e.message();
+        }
     }
 }
 

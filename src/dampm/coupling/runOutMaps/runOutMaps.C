@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "runOutMaps.H"
+#include "exactPrecision.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
 #include <cmath>
@@ -48,42 +49,6 @@ Foam::runOutMaps::runOutMaps
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::runOutMaps::writeDict
-(
-    const Time& runTime3D,
-    const fileName& sourceCase,
-    const word& sourceTime,
-    const hazardMaps* maps
-)
-{
-    IOdictionary dict
-    (
-        IOobject
-        (
-            dictName,
-            runTime3D.timeName(),
-            "uniform",
-            runTime3D,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    dict.set("sourceCase", sourceCase);
-    // A string: a time name such as 1.5 would read back as a number
-    dict.set("sourceTime", string(sourceTime));
-    if (maps)
-    {
-        maps->saveMaxima(dict);
-    }
-    dict.regIOobject::writeObject
-    (
-        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED,
-        true
-    );
-}
-
-
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
@@ -103,18 +68,14 @@ Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
         return nullptr;
     }
     const IOdictionary dict(io);
-    autoPtr<runOutMaps> maps
-    (
-        new runOutMaps
-        (
-            dict.get<fileName>("sourceCase"),
-            word(dict.get<string>("sourceTime"))
-        )
-    );
+    const fileName sourceCase(dict.get<fileName>("sourceCase"));
+    const word sourceTime(dict.get<string>("sourceTime"));
+    autoPtr<runOutMaps> maps(new runOutMaps(sourceCase, sourceTime));
     if (dict.found("maxHeight"))
     {
         maps->maps_->loadMaxima(dict);
     }
+    maps->dict_ = source(runTime3D, sourceCase, sourceTime);
     Info<< "Hazard maps: continuing those of the run-out "
         << maps->case_.path() << " (time " << maps->sourceTime_
         << ") on its grid" << nl << endl;
@@ -124,14 +85,32 @@ Foam::autoPtr<Foam::runOutMaps> Foam::runOutMaps::New(const Time& runTime3D)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::runOutMaps::writeSource
+Foam::autoPtr<Foam::IOdictionary> Foam::runOutMaps::source
 (
     const Time& runTime3D,
     const fileName& sourceCase,
     const word& sourceTime
 )
 {
-    writeDict(runTime3D, sourceCase, sourceTime, nullptr);
+    autoPtr<IOdictionary> dict
+    (
+        new exactPrecisionIO<IOdictionary>
+        (
+            IOobject
+            (
+                dictName,
+                runTime3D.timeName(),
+                "uniform",
+                runTime3D,
+                IOobject::NO_READ,
+                IOobject::AUTO_WRITE
+            )
+        )
+    );
+    dict->set("sourceCase", sourceCase);
+    // A string: a time name such as 1.5 would read back as a number
+    dict->set("sourceTime", string(sourceTime));
+    return dict;
 }
 
 
@@ -226,14 +205,14 @@ void Foam::runOutMaps::update(const particleArrays& particles)
 }
 
 
-void Foam::runOutMaps::write(const Time& runTime3D) const
+void Foam::runOutMaps::write(const Time& runTime3D)
 {
     maps_->writeRasters
     (
         runTime3D.globalPath()/"postProcessing"/"hazardMaps"
        /runTime3D.timeName()
     );
-    writeDict(runTime3D, case_.path(), sourceTime_, maps_.get());
+    maps_->saveMaxima(dict_());
 }
 
 

@@ -403,7 +403,6 @@ Foam::depthAveragedFlow::depthAveragedFlow
     massTol_(0),
     outflowMass_(0),
     prepared_(false),
-    stressPending_(false),
     terrainFree_(false),
     forcesDone_(false)
 {
@@ -505,26 +504,13 @@ Foam::depthAveragedFlow::depthAveragedFlow
 
     // The columns: the cloud of the start time, or the release
     const Time& runTime = grid.mesh().time();
-    wordList missing;
-    const bool restarted = particleCloudIO::readStartTime
-    (
-        particles_, grid.mesh(), cloudName, missing
-    );
+    const bool restarted =
+        particleCloudIO::readStartTime(particles_, grid, cloudName);
     if (restarted)
     {
-        if (missing.found("F"))
-        {
-            // Footprints of an older cloud: square in cell units, of the
-            // basal area A (or a seed column's)
-            const gridGeometry& g = grid.geometry();
-            const double* A = particles_.column(A_);
-            for (label i = 0; i < particles_.size(); ++i)
-            {
-                const scalar a = A[i] > 0 ? A[i] : seedArea();
-                particles_.column(F_)[i] = std::sqrt(a*g.dx[0]/g.dx[1]);
-                particles_.column(F_ + 3)[i] = std::sqrt(a*g.dx[1]/g.dx[0]);
-            }
-        }
+        const fileName dir(particleCloudIO::cloudDir(grid.mesh(), cloudName));
+        particleCloudIO::checkRange(particles_, dir, "h", 0, true, GREAT);
+        particleCloudIO::checkRange(particles_, dir, "A", 0, false, GREAT);
     }
     else
     {
@@ -568,10 +554,6 @@ Foam::depthAveragedFlow::depthAveragedFlow
             threeDigits(0.5*rho_*g_*maxColumnThickness())
         );
     }
-    // A cloud without the stress (older, or converted): compute it at the
-    // first step from the velocity gradient (unstressed for G > 0)
-    stressPending_ = restarted && missing.found("sigma");
-
     // A bed flat at Z = 0: the terrain terms of S5 are exactly 0, 0 and 1
     // (a restart's cloud may hold others); set once, kept by splits
     terrainFree_ = topography_->isFlat();
@@ -656,17 +638,18 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
 
 void Foam::depthAveragedFlow::readState(const dictionary& state)
 {
+    // Every entry the run wrote: the defaults of its start, not this one's
     outflowMass_ = state.get<scalar>("outflowMass");
-    massTol_ = state.getOrDefault<scalar>("massTolerance", massTol_);
+    massTol_ = state.get<scalar>("massTolerance");
     if (!splitHMinGiven_)
     {
-        splitHMin_ = state.getOrDefault<scalar>("splitHMin", splitHMin_);
+        splitHMin_ = state.get<scalar>("splitHMin");
     }
     if (!speedLimitGiven_)
     {
-        speedLimit_ = state.getOrDefault<scalar>("speedLimit", speedLimit_);
+        speedLimit_ = state.get<scalar>("speedLimit");
     }
-    if (rheology_->defaultShearModulus() && state.found("shearModulus"))
+    if (rheology_->defaultShearModulus())
     {
         rheology_->setDefaultShearModulus(state.get<scalar>("shearModulus"));
     }
@@ -832,12 +815,6 @@ void Foam::depthAveragedFlow::computeForces()
         }
         rheology_->addResistance(view);
     }
-    if (stress && stressPending_)
-    {
-        rheology_->stress(view, 0);
-    }
-    stressPending_ = false;
-
     // Scattered with S5 already (particlesToGrid)
     if (forcesDone_)
     {

@@ -332,12 +332,17 @@ Foam::mpm3dFlow::mpm3dFlow
 
     // The particles: the cloud of the start time, or the initial regions
     const Time& runTime = grid.mesh().time();
-    wordList missing;
-    const bool restarted = particleCloudIO::readStartTime
-    (
-        particles_, grid.mesh(), cloudName, missing
-    );
-    if (!restarted)
+    const bool restarted =
+        particleCloudIO::readStartTime(particles_, grid, cloudName);
+    if (restarted)
+    {
+        particleCloudIO::checkRange
+        (
+            particles_, particleCloudIO::cloudDir(grid.mesh(), cloudName),
+            "J", 0, false, GREAT
+        );
+    }
+    else
     {
         if (!dict.isDict("initialRegions"))
         {
@@ -381,8 +386,8 @@ void Foam::mpm3dFlow::writeState(dictionary& state) const
 void Foam::mpm3dFlow::readState(const dictionary& state)
 {
     outflowMass_ = state.get<scalar>("outflowMass");
-    settings_.massTol =
-        state.getOrDefault<scalar>("massTolerance", settings_.massTol);
+    settings_.massTol = state.get<scalar>("massTolerance");
+    // A barrier added for the restart has let nothing pass yet
     forAll(barriers_, b)
     {
         barriers_[b].setPassedOutflow

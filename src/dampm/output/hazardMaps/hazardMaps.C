@@ -11,6 +11,7 @@ License
 #include "hazardMaps.H"
 #include "terrainRaster.H"
 #include "OSspecific.H"
+#include "mpmTime.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -32,6 +33,18 @@ void Foam::hazardMaps::readMaximum
     );
     if (!isFile(io.objectPath()))
     {
+        // A time directory written by a run holds its maxima
+        if
+        (
+            mpmTime::state(mesh.time().timePath())
+         == mpmTime::directoryState::complete
+        )
+        {
+            FatalErrorInFunction
+                << "hazard map " << io.objectPath() << " is missing: the"
+                << " run cannot continue from time " << mesh.time().timeName()
+                << " without its maxima" << exit(FatalError);
+        }
         return;
     }
     const pointScalarField previous(io, pointMesh::New(mesh));
@@ -116,7 +129,7 @@ Foam::hazardMaps::hazardMaps
     {
         fields_[k].reset
         (
-            new pointScalarField
+            new exactPrecisionIO<pointScalarField>
             (
                 IOobject
                 (

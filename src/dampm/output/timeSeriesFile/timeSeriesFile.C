@@ -48,6 +48,21 @@ Foam::timeSeriesFile::timeSeriesFile
         os  << ' ' << c;
     }
     os  << endl;
+    checkWritten();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::timeSeriesFile::checkWritten() const
+{
+    if (!os_->good())
+    {
+        FatalErrorInFunction
+            << "cannot write " << os_->name() << " (disk full, or the"
+            << " directory not writable?): the run stops"
+            << exit(FatalError);
+    }
 }
 
 
@@ -67,6 +82,7 @@ void Foam::timeSeriesFile::write(const UList<scalar>& row)
         os  << (i ? " " : "") << row[i];
     }
     os  << endl;
+    checkWritten();
 }
 
 

@@ -9,6 +9,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleCloudIO.H"
+#include "mpmTime.H"
+#include "exactPrecision.H"
+#include "particle.H"
 #include "cloud.H"
 #include "IOField.H"
 #include "IOdictionary.H"
@@ -32,10 +35,9 @@ namespace Foam
         "tensor2DField",
         0
     );
-
-    //- Fewest significant digits for particle data
-    static const unsigned minParticlePrecision = 12;
 }
+
+const Foam::scalar Foam::particleCloudIO::maxSpeed = 1e4;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -59,14 +61,14 @@ Foam::IOobject Foam::particleCloudIO::fileIO
 }
 
 
-void Foam::particleCloudIO::writeCloudProperties() const
+bool Foam::particleCloudIO::writeCloudProperties() const
 {
     IOdictionary props
     (
         fileIO("cloudProperties", "uniform"/cloud::prefix/this->name())
     );
     props.add("geometry", word("positions"));
-    props.regIOobject::writeObject
+    return props.regIOobject::writeObject
     (
         IOstream::ASCII,
         IOstream::currentVersion,
@@ -76,12 +78,14 @@ void Foam::particleCloudIO::writeCloudProperties() const
 }
 
 
-void Foam::particleCloudIO::writePositions() const
+bool Foam::particleCloudIO::writePositions
+(
+    IOstream::streamFormat fmt
+) const
 {
     const IOobject io(fileIO("positions", cloud::prefix/this->name()));
     mkDir(io.path());
-    OFstream os(io.objectPath());
-    os.precision(max(IOstream::defaultPrecision(), minParticlePrecision));
+    OFstream os(io.objectPath(), fmt);
     io.writeHeader(os, "Cloud<passiveParticle>");
 
     const gridGeometry& g = grid_.geometry();
@@ -90,21 +94,43 @@ void Foam::particleCloudIO::writePositions() const
     const double* y = particles_.column(particleArrays::Y);
     const double* z = particles_.column(particleArrays::Z);
 
+    // As OpenFOAM's particle::writePosition: binary is the position and
+    // the cell of its 1706 layout
+    particle::positionsCompat1706 record;
+    const std::size_t recordSize =
+        offsetof(particle::positionsCompat1706, facei)
+      - offsetof(particle::positionsCompat1706, position);
+
     os  << particles_.size() << nl << token::BEGIN_LIST << nl;
     for (label i = 0; i < particles_.size(); ++i)
     {
-        os  << point(x[i], y[i], z[i]) << token::SPACE
-            << meshCell[g.cellOf(x[i], y[i], z[i])] << nl;
+        record.position = point(x[i], y[i], z[i]);
+        record.celli = meshCell[g.cellOf(x[i], y[i], z[i])];
+        if (fmt == IOstream::ASCII)
+        {
+            os  << record.position << token::SPACE << record.celli;
+        }
+        else
+        {
+            os.write
+            (
+                reinterpret_cast<const char*>(&record.position), recordSize
+            );
+        }
+        os  << nl;
     }
     os  << token::END_LIST << nl;
     IOobject::writeEndDivider(os);
+    os.flush();
+    return os.good();
 }
 
 
 template<class Type>
-void Foam::particleCloudIO::writeTypedField
+bool Foam::particleCloudIO::writeTypedField
 (
-    const particleArrays::fieldInfo& f
+    const particleArrays::fieldInfo& f,
+    IOstream::streamFormat fmt
 ) const
 {
     IOField<Type> fld
@@ -121,34 +147,33 @@ void Foam::particleCloudIO::writeTypedField
         }
     }
 
-    const unsigned oldPrecision = IOstream::defaultPrecision();
-    IOstream::defaultPrecision(max(oldPrecision, minParticlePrecision));
-    fld.regIOobject::writeObject
+    return fld.regIOobject::writeObject
     (
-        IOstream::ASCII,
+        fmt,
         IOstream::currentVersion,
         IOstream::UNCOMPRESSED,
         true
     );
-    IOstream::defaultPrecision(oldPrecision);
 }
 
 
-void Foam::particleCloudIO::writeField
+bool Foam::particleCloudIO::writeField
 (
-    const particleArrays::fieldInfo& f
+    const particleArrays::fieldInfo& f,
+    IOstream::streamFormat fmt
 ) const
 {
     typedef particleArrays::fieldKind kind;
     switch (f.kind)
     {
-        case kind::scalar: writeTypedField<scalar>(f); break;
-        case kind::vector: writeTypedField<vector>(f); break;
-        case kind::symmTensor: writeTypedField<symmTensor>(f); break;
-        case kind::tensor: writeTypedField<tensor>(f); break;
-        case kind::tensor2D: writeTypedField<tensor2D>(f); break;
+        case kind::scalar: return writeTypedField<scalar>(f, fmt);
+        case kind::vector: return writeTypedField<vector>(f, fmt);
+        case kind::symmTensor: return writeTypedField<symmTensor>(f, fmt);
+        case kind::tensor: return writeTypedField<tensor>(f, fmt);
+        case kind::tensor2D: return writeTypedField<tensor2D>(f, fmt);
         case kind::internal: break;
     }
+    return true;
 }
 
 
@@ -207,6 +232,16 @@ Foam::particleCloudIO::particleCloudIO
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::fileName Foam::particleCloudIO::cloudDir
+(
+    const fvMesh& mesh,
+    const word& cloudName
+)
+{
+    return mesh.time().timePath()/mesh.dbDir()/cloud::prefix/cloudName;
+}
+
+
 bool Foam::particleCloudIO::found
 (
     const fvMesh& mesh,
@@ -222,7 +257,7 @@ bool Foam::particleCloudIO::found
 }
 
 
-Foam::wordList Foam::particleCloudIO::read
+void Foam::particleCloudIO::read
 (
     particleArrays& particles,
     const fvMesh& mesh,
@@ -255,27 +290,49 @@ Foam::wordList Foam::particleCloudIO::read
             << exit(FatalIOError);
     }
 
-    // Format of Cloud<passiveParticle> in geometry positions: (x y z) celli
+    // Cloud<passiveParticle> with geometry positions: N ( (x y z) celli ...)
+    // in ASCII, or the position and cell of particle::positionsCompat1706
+    // per particle in binary
     const label n = readLabel(is);
+    if (n < 0 || !is.good())
+    {
+        FatalIOErrorInFunction(is)
+            << "particle count " << n << " is invalid; allowed: >= 0"
+            << exit(FatalIOError);
+    }
     particles.clear();
     particles.append(n);
     double* x = particles.column(particleArrays::X);
     double* y = particles.column(particleArrays::Y);
     double* z = particles.column(particleArrays::Z);
+    particle::positionsCompat1706 record;
+    const std::size_t recordSize =
+        offsetof(particle::positionsCompat1706, facei)
+      - offsetof(particle::positionsCompat1706, position);
     is.readBegin("positions");
     for (label i = 0; i < n; ++i)
     {
-        point p;
-        label celli;
-        is >> p >> celli;
-        x[i] = p.x();
-        y[i] = p.y();
-        z[i] = p.z();
+        if (is.format() == IOstream::ASCII)
+        {
+            is >> record.position >> record.celli;
+        }
+        else
+        {
+            is.read(reinterpret_cast<char*>(&record.position), recordSize);
+        }
+        if (!is.good())
+        {
+            FatalIOErrorInFunction(is)
+                << "particle " << i << " of the " << n << " the file"
+                << " announces cannot be read" << exit(FatalIOError);
+        }
+        x[i] = record.position.x();
+        y[i] = record.position.y();
+        z[i] = record.position.z();
     }
     is.readEnd("positions");
     is.check(FUNCTION_NAME);
 
-    wordList missing;
     typedef particleArrays::fieldKind kind;
     for (const particleArrays::fieldInfo& f : particles.fields())
     {
@@ -295,8 +352,12 @@ Foam::wordList Foam::particleCloudIO::read
         );
         if (!isFile(io.objectPath()))
         {
-            missing.append(f.name);
-            continue;
+            FatalErrorInFunction
+                << "cloud " << cloudName << " at time " << timeName
+                << " has no field " << f.name << ": " << io.objectPath()
+                << " is missing. Every field of the cloud is required to"
+                << " continue it (" << fieldNames(particles) << ")"
+                << exit(FatalError);
         }
         switch (f.kind)
         {
@@ -310,54 +371,195 @@ Foam::wordList Foam::particleCloudIO::read
             case kind::internal: break;
         }
     }
-    return missing;
+}
+
+
+Foam::wordList Foam::particleCloudIO::fieldNames
+(
+    const particleArrays& particles
+)
+{
+    wordList names;
+    for (const particleArrays::fieldInfo& f : particles.fields())
+    {
+        if (f.kind != particleArrays::fieldKind::internal)
+        {
+            names.append(f.name);
+        }
+    }
+    return names;
+}
+
+
+void Foam::particleCloudIO::checkRange
+(
+    const particleArrays& particles,
+    const fileName& dir,
+    const word& field,
+    const scalar lo,
+    const bool loIncluded,
+    const scalar hi
+)
+{
+    const particleArrays::fieldInfo& f = particles.field(field);
+    const label nCmpt = particles.nComponents(f.kind);
+    for (label i = 0; i < particles.size(); ++i)
+    {
+        // A vector by its magnitude, a scalar by its value
+        scalar v = 0;
+        for (label c = 0; c < nCmpt; ++c)
+        {
+            const double vc = particles.column(f.first + c)[i];
+            v = nCmpt == 1 ? vc : v + vc*vc;
+        }
+        v = nCmpt == 1 ? v : std::sqrt(v);
+        if (!(loIncluded ? v >= lo : v > lo) || !(v <= hi))
+        {
+            FatalErrorInFunction
+                << dir/field << ": particle " << i << " has "
+                << (nCmpt == 1 ? "" : "|") << field << (nCmpt == 1 ? "" : "|")
+                << " = " << v << "; allowed: " << lo
+                << (loIncluded ? " <= " : " < ") << field;
+            if (hi < GREAT)
+            {
+                FatalError<< " <= " << hi;
+            }
+            FatalError<< ". The cloud is corrupt" << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::particleCloudIO::checkCloud
+(
+    const particleArrays& particles,
+    const mpmGrid& grid,
+    const fileName& dir
+)
+{
+    // Every value finite
+    for (const particleArrays::fieldInfo& f : particles.fields())
+    {
+        if (f.kind == particleArrays::fieldKind::internal)
+        {
+            continue;
+        }
+        for (label c = 0; c < particles.nComponents(f.kind); ++c)
+        {
+            const double* v = particles.column(f.first + c);
+            for (label i = 0; i < particles.size(); ++i)
+            {
+                if (!std::isfinite(v[i]))
+                {
+                    FatalErrorInFunction
+                        << dir/f.name << ": particle " << i << " has a"
+                        << " value that is not finite (" << v[i] << ");"
+                        << " allowed: finite values. The cloud is corrupt"
+                        << exit(FatalError);
+                }
+            }
+        }
+    }
+
+    // Inside the grid (a 2D grid: its x-y extent)
+    const gridGeometry& g = grid.geometry();
+    const int nDim = grid.is2D() ? 2 : 3;
+    for (int d = 0; d < nDim; ++d)
+    {
+        const double* x = particles.column(particleArrays::X + d);
+        for (label i = 0; i < particles.size(); ++i)
+        {
+            if (!(x[i] >= g.origin[d] && x[i] <= g.upper(d)))
+            {
+                FatalErrorInFunction
+                    << dir/"positions" << ": particle " << i << " lies"
+                    << " outside the mesh (" << "xyz"[d] << " = " << x[i]
+                    << "; allowed: " << g.origin[d] << " to " << g.upper(d)
+                    << " m). The cloud is corrupt or of another mesh"
+                    << exit(FatalError);
+            }
+        }
+    }
+
+    checkRange(particles, dir, "m", 0, false, GREAT);
+    checkRange(particles, dir, "V", 0, false, GREAT);
+    checkRange(particles, dir, "U", 0, true, maxSpeed);
 }
 
 
 bool Foam::particleCloudIO::writeObject
 (
-    IOstream::streamFormat,
+    IOstream::streamFormat fmt,
     IOstream::versionNumber,
     IOstream::compressionType,
     const bool
 ) const
 {
-    writeCloudProperties();
-    writePositions();
+    // Restart state: the same doubles when read back, in ASCII too
+    const exactPrecision exact;
+    bool ok = writeCloudProperties() && writePositions(fmt);
     for (const particleArrays::fieldInfo& f : particles_.fields())
     {
         if (f.name != "positions")
         {
-            writeField(f);
+            ok = writeField(f, fmt) && ok;
         }
     }
-    return true;
+    return ok;
 }
 
 
 bool Foam::particleCloudIO::readStartTime
 (
     particleArrays& particles,
-    const fvMesh& mesh,
-    const word& cloudName,
-    wordList& missing
+    const mpmGrid& grid,
+    const word& cloudName
 )
 {
-    const word timeName = mesh.time().timeName();
+    const fvMesh& mesh = grid.mesh();
+    const Time& runTime = mesh.time();
+    const word timeName = runTime.timeName();
+    const fileName dir(cloudDir(mesh, cloudName));
+    switch (mpmTime::state(runTime.timePath()))
+    {
+        case mpmTime::directoryState::fresh:
+        {
+            return false;
+        }
+        case mpmTime::directoryState::incomplete:
+        {
+            FatalErrorInFunction
+                << "time directory " << runTime.timePath() << " is"
+                << " incomplete (no uniform/" << mpmTime::recordName
+                << ": the run that wrote it was stopped while writing, or"
+                << " the disk was full); its cloud " << cloudName
+                << " cannot be used" << exit(FatalError);
+            break;
+        }
+        case mpmTime::directoryState::complete:
+        {
+            break;
+        }
+    }
     if (!found(mesh, cloudName, timeName))
     {
-        return false;
+        FatalErrorInFunction
+            << "time directory " << runTime.timePath() << " was written"
+            << " completely but has no cloud " << cloudName << " ("
+            << dir/"positions" << " is missing): it cannot be"
+            << " continued" << exit(FatalError);
     }
-    missing = read(particles, mesh, cloudName, timeName);
+    read(particles, mesh, cloudName, timeName);
+    if (particles.size() == 0)
+    {
+        FatalErrorInFunction
+            << "cloud " << dir << " holds no particle: nothing to"
+            << " simulate (all the mass had left the domain)"
+            << exit(FatalError);
+    }
+    checkCloud(particles, grid, dir);
     Info<< "Read " << particles.size() << " particles of cloud " << cloudName
         << " at time " << timeName << endl;
-    if (!missing.empty())
-    {
-        WarningInFunction
-            << "fields " << missing << " of cloud " << cloudName
-            << " are missing at time " << timeName
-            << ": started from their initial values" << endl;
-    }
     return true;
 }
 

@@ -1,0 +1,393 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpmTime.H"
+#include "argList.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
+#include "OStringStream.H"
+#include "OSspecific.H"
+
+#include <fstream>
+#include <zlib.h>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::word Foam::mpmTime::recordName("writeComplete");
+
+volatile std::sig_atomic_t Foam::mpmTime::stopSignal_ = 0;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::mpmTime::catchStop(int sig)
+{
+    stopSignal_ = sig;
+}
+
+
+void Foam::mpmTime::catchStopSignals()
+{
+    struct sigaction action;
+    sigemptyset(&action.sa_mask);
+    // A second signal takes the default action: it stops at once
+    action.sa_flags = SA_RESETHAND;
+    action.sa_handler = catchStop;
+    for (const int sig : {SIGTERM, SIGINT})
+    {
+        sigaction(sig, &action, nullptr);
+    }
+    // A file-size limit fails the write like a full disk (the write is
+    // checked) instead of killing the process in the middle of it
+    std::signal(SIGXFSZ, SIG_IGN);
+}
+
+
+void Foam::mpmTime::checkStartTime()
+{
+    const fileName dir(timePath());
+    const directoryState s = state(dir);
+    if (s == directoryState::complete)
+    {
+        startWriter_ = writer(dir);
+        lastComplete_ = timeName();
+        return;
+    }
+    if (s == directoryState::fresh)
+    {
+        return;
+    }
+
+    // Incomplete: the last complete time directory before it
+    const instantList all(times());
+    label previous = -1;
+    forAll(all, i)
+    {
+        if
+        (
+            all[i].name() != constant()
+         && all[i].value() < value()
+         && state(path()/all[i].name()) == directoryState::complete
+        )
+        {
+            previous = i;
+        }
+    }
+    const word startFrom =
+        controlDict().getOrDefault<word>("startFrom", "latestTime");
+
+    if (startFrom != "latestTime" || previous < 0)
+    {
+        FatalErrorInFunction
+            << "time directory " << dir << " is incomplete: it holds output"
+            << " but no uniform/" << recordName << " (the run that wrote it"
+            << " was stopped while writing, or the disk was full), so it"
+            << " cannot be restarted from. ";
+        if (previous < 0)
+        {
+            FatalError
+                << "No complete time directory precedes it: remove it and"
+                << " start again";
+        }
+        else
+        {
+            FatalError
+                << "The last complete time directory is "
+                << all[previous].name() << ": set startFrom latestTime (it"
+                << " falls back to it) or startTime " << all[previous].name()
+                << " in " << path()/system()/controlDictName;
+        }
+        FatalError << exit(FatalError);
+    }
+
+    WarningInFunction
+        << "time directory " << timeName() << " is incomplete (no uniform/"
+        << recordName << ": the run that wrote it was stopped while writing,"
+        << " or the disk was full). Starting from " << all[previous].name()
+        << ", the last complete time directory; " << timeName()
+        << " is written again when the run reaches it" << nl << endl;
+    this->startFrom(all[previous]);
+}
+
+
+void Foam::mpmTime::startFrom(const instant& t)
+{
+    // As Time::setControls: deltaT from the directory only when the
+    // controlDict adjusts it
+    const scalar dtControl = deltaT_;
+    setTime(t, 0);
+    if (!isAdjustTimeStep())
+    {
+        deltaT_ = dtControl;
+    }
+    deltaTSave_ = deltaT_;
+    startTime_ = value();
+    startTimeIndex_ = timeIndex_;
+    startWriter_ = writer(timePath());
+    lastComplete_ = timeName();
+}
+
+
+Foam::fileNameList Foam::mpmTime::cutShort
+(
+    const fileName& dir,
+    const double since
+)
+{
+    fileNameList broken;
+    for (const fileName& f : readDir(dir, fileName::FILE, false))
+    {
+        const fileName file(dir/f);
+        if (highResLastModified(file) >= since && !whole(file))
+        {
+            broken.append(file);
+        }
+    }
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY))
+    {
+        broken.append(cutShort(dir/d, since));
+    }
+    return broken;
+}
+
+
+bool Foam::mpmTime::writeRecord() const
+{
+    IOdictionary record
+    (
+        IOobject
+        (
+            recordName,
+            timeName(),
+            "uniform",
+            *this,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    record.add("application", application_);
+    return
+        record.regIOobject::writeObject
+        (
+            IOstream::ASCII,
+            IOstream::currentVersion,
+            IOstream::UNCOMPRESSED,
+            true
+        )
+     && whole(record.objectPath());
+}
+
+
+void Foam::mpmTime::purgeOldTimes() const
+{
+    if (!purgeWrite_)
+    {
+        return;
+    }
+    if (previousWriteTimes_.empty() || previousWriteTimes_.top() != timeName())
+    {
+        previousWriteTimes_.push(timeName());
+    }
+    while (previousWriteTimes_.size() > purgeWrite_)
+    {
+        rmDir(path()/previousWriteTimes_.pop());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mpmTime::mpmTime
+(
+    const word& ctrlDictName,
+    const argList& args,
+    const bool checkStart
+)
+:
+    Time(ctrlDictName, args),
+    application_(args.executable()),
+    stopAnnounced_(false)
+{
+    catchStopSignals();
+    if (checkStart)
+    {
+        checkStartTime();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::mpmTime::directoryState Foam::mpmTime::state(const fileName& timeDir)
+{
+    const fileName record(timeDir/"uniform"/recordName);
+    if (isFile(record) && whole(record))
+    {
+        return directoryState::complete;
+    }
+    if
+    (
+        isFile(record)
+     || isFile(timeDir/"uniform"/"time")
+     || isDir(timeDir/"lagrangian")
+    )
+    {
+        return directoryState::incomplete;
+    }
+    return directoryState::fresh;
+}
+
+
+Foam::word Foam::mpmTime::writer(const fileName& timeDir)
+{
+    if (state(timeDir) != directoryState::complete)
+    {
+        return word::null;
+    }
+    IFstream is(timeDir/"uniform"/recordName);
+    const dictionary record(is);
+    return record.getOrDefault<word>("application", word::null);
+}
+
+
+bool Foam::mpmTime::whole(const fileName& file)
+{
+    static const std::string divider = []
+    {
+        OStringStream os;
+        IOobject::writeEndDivider(os);
+        std::string s(os.str());
+        return s.substr(s.find_first_not_of("\n"));
+    }();
+
+    // The last bytes of the file (decompressed)
+    std::string tail;
+    const std::size_t keep = 2*divider.size();
+    if (file.hasExt("gz"))
+    {
+        gzFile gz = gzopen(file.c_str(), "rb");
+        if (!gz)
+        {
+            return false;
+        }
+        char buffer[65536];
+        int n = 0;
+        while ((n = gzread(gz, buffer, sizeof(buffer))) > 0)
+        {
+            tail.append(buffer, n);
+            if (tail.size() > 4*keep)
+            {
+                tail.erase(0, tail.size() - keep);
+            }
+        }
+        int status = Z_OK;
+        gzerror(gz, &status);
+        gzclose(gz);
+        if (n < 0 || (status != Z_OK && status != Z_STREAM_END))
+        {
+            return false;
+        }
+    }
+    else
+    {
+        std::ifstream is(file, std::ios::binary | std::ios::ate);
+        if (!is)
+        {
+            return false;
+        }
+        const std::streamoff size = is.tellg();
+        const std::streamoff start = std::max<std::streamoff>(0, size - keep);
+        tail.resize(size - start);
+        is.seekg(start);
+        is.read(&tail[0], tail.size());
+        if (!is)
+        {
+            return false;
+        }
+    }
+    return
+        tail.size() >= divider.size()
+     && tail.compare(tail.size() - divider.size(), divider.size(), divider)
+     == 0;
+}
+
+
+int Foam::mpmTime::exitCode() const
+{
+    return stopSignal_ ? 128 + stopSignal_ : 0;
+}
+
+
+Foam::Time& Foam::mpmTime::operator++()
+{
+    if (stopSignal_ && !stopAnnounced_)
+    {
+        stopAnnounced_ = true;
+        Info<< nl << "Caught signal " << int(stopSignal_) << " ("
+            << (stopSignal_ == SIGTERM ? "SIGTERM" : "SIGINT") << "): this"
+            << " step is the last, and it is written" << nl << endl;
+        stopAt(stopAtControls::saWriteNow);
+    }
+    return Time::operator++();
+}
+
+
+bool Foam::mpmTime::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    if (!writeTime())
+    {
+        return false;
+    }
+
+    // Written again (a restart from before it): incomplete until the record
+    const fileName dir(timePath());
+    rm(dir/"uniform"/recordName);
+
+    // uniform/time first: files at least as new as it are this write's
+    const fileName timeDict(dir/"uniform"/"time");
+    bool written = writeTimeDict() && whole(timeDict);
+    const double since = written ? highResLastModified(timeDict) : 0;
+    written = written && objectRegistry::writeObject(fmt, ver, cmp, valid);
+    const fileNameList broken(written ? cutShort(dir, since) : fileNameList());
+
+    if (!written || broken.size() || !writeRecord())
+    {
+        FatalErrorInFunction
+            << "cannot write time directory " << dir << ": ";
+        if (broken.size())
+        {
+            FatalError<< broken.size() << " file(s) cut short, first "
+                << broken.first();
+        }
+        else
+        {
+            FatalError<< "a file could not be written";
+        }
+        FatalError
+            << " (disk full, or the directory not writable?). The run stops;"
+            << " the last complete time directory is "
+            << (lastComplete_.empty() ? word("none") : lastComplete_)
+            << ", and a restart (startFrom latestTime) starts from it"
+            << exit(FatalError);
+    }
+    lastComplete_ = timeName();
+    purgeOldTimes();
+    return true;
+}
+
+
+// ************************************************************************* //
