@@ -326,6 +326,28 @@ bool Foam::particleArrays::finite(const std::vector<label>& columns) const
 }
 
 
+bool Foam::particleArrays::setBins
+(
+    const gridGeometry& g,
+    const std::vector<label>& bins
+)
+{
+    const label nCells = g.nCellsTotal();
+    binned_ = label(bins.size()) == size_;
+    for (label i = 0; binned_ && i < size_; ++i)
+    {
+        binned_ =
+            bins[i] >= 0 && bins[i] < nCells && (!i || bins[i - 1] <= bins[i]);
+    }
+    if (binned_)
+    {
+        cell_ = bins;
+        countCells(nCells);
+    }
+    return binned_;
+}
+
+
 bool Foam::particleArrays::sortByCell
 (
     const gridGeometry& g,

@@ -68,6 +68,26 @@ bool Foam::particleCloudIO::writeCloudProperties() const
         fileIO("cloudProperties", "uniform"/cloud::prefix/this->name())
     );
     props.add("geometry", word("positions"));
+
+    // The particles' bins, run-length coded (bins are in storage order): a
+    // restart continues with them, bit for bit (particleArrays::sortByCell
+    // keeps bins a particle has moved from)
+    if (particles_.binned())
+    {
+        const std::vector<label>& cell = particles_.cell();
+        DynamicList<label> cells, counts;
+        for (label i = 0; i < particles_.size(); ++i)
+        {
+            if (!i || cell[i] != cell[i - 1])
+            {
+                cells.append(cell[i]);
+                counts.append(0);
+            }
+            ++counts.last();
+        }
+        props.add("binCells", cells);
+        props.add("binCounts", counts);
+    }
     return props.regIOobject::writeObject
     (
         IOstream::ASCII,
@@ -487,6 +507,57 @@ void Foam::particleCloudIO::checkCloud
 }
 
 
+void Foam::particleCloudIO::readBins
+(
+    particleArrays& particles,
+    const mpmGrid& grid,
+    const word& cloudName
+)
+{
+    const IOdictionary props
+    (
+        IOobject
+        (
+            "cloudProperties",
+            grid.mesh().time().timeName(),
+            "uniform"/cloud::prefix/cloudName,
+            grid.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if (!props.found("binCells"))
+    {
+        return;
+    }
+    const labelList cells(props.get<labelList>("binCells"));
+    const labelList counts(props.get<labelList>("binCounts"));
+    std::vector<label> bins;
+    bins.reserve(particles.size());
+    for (label k = 0; k < min(cells.size(), counts.size()); ++k)
+    {
+        if (counts[k] < 0 || label(bins.size()) + counts[k] > particles.size())
+        {
+            break;
+        }
+        bins.insert(bins.end(), counts[k], cells[k]);
+    }
+    if
+    (
+        cells.size() != counts.size()
+     || !particles.setBins(grid.geometry(), bins)
+    )
+    {
+        FatalIOErrorInFunction(props)
+            << "binCells and binCounts do not bin the " << particles.size()
+            << " particles of the cloud in the "
+            << grid.geometry().nCellsTotal() << " cells of the mesh: the"
+            << " cloud is corrupt or of another mesh" << exit(FatalIOError);
+    }
+}
+
+
 bool Foam::particleCloudIO::writeObject
 (
     IOstream::streamFormat fmt,
@@ -558,6 +629,7 @@ bool Foam::particleCloudIO::readStartTime
             << exit(FatalError);
     }
     checkCloud(particles, grid, dir);
+    readBins(particles, grid, cloudName);
     Info<< "Read " << particles.size() << " particles of cloud " << cloudName
         << " at time " << timeName << endl;
     return true;
