@@ -118,8 +118,9 @@ int main(int argc, char *argv[])
     timers.report(Info);
     Info<< "End\n" << endl;
 
-    // Non-zero when a signal stopped the run before endTime
-    return runTime.exitCode();
+    runTime.exitIfStopped();
+
+    return 0;
 }
 
 

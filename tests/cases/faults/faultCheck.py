@@ -130,3 +130,88 @@ def checkAccepted(name, status, out, expected=()):
         alternatives = text if isinstance(text, tuple) else (text,)
         check(any(a in out for a in alternatives),
               "%s: the log says '%s'" % (name, "' or '".join(alternatives)))
+
+
+# Stopped runs and restarts ------------------------------------------------
+
+recordName = "writeComplete"
+
+
+def application(case):
+    text = open(os.path.join(case, "system", "controlDict")).read()
+    return re.search(r"^application\s+(\w+);", text, re.M).group(1)
+
+
+def setEntry(path, entry, value):
+    """Set a dictionary entry with foamDictionary (a/b for sub-entries)."""
+    subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value), path],
+                   check=True, capture_output=True)
+
+
+def newRun(name, base=".", times=(), entries=None):
+    """A sub-case with base's system/ and constant/ and the listed time
+    directories, with controlDict entries set."""
+    work = makeVariant(name, copy=("system", "constant") + tuple(times), base=base)
+    for entry, value in (entries or {}).items():
+        setEntry(os.path.join(work, "system", "controlDict"), entry, value)
+    return work
+
+
+def complete(case, time):
+    return os.path.isfile(os.path.join(case, time, "uniform", recordName))
+
+
+def start(case, log):
+    """Start the case's application in the background."""
+    return subprocess.Popen([application(case), "-case", case],
+                            stdout=open(os.path.join(case, log), "w"), stderr=subprocess.STDOUT)
+
+
+def summaryRows(case, solver, startTime="0"):
+    """Rows of postProcessing/<solver>/<startTime>/summary.dat (startTime
+    None: the latest started), all columns but clockTime."""
+    base = os.path.join(case, "postProcessing", solver)
+    if startTime is None:
+        starts = sorted(os.listdir(base), key=float) if os.path.isdir(base) else []
+        if not starts:
+            return []
+        startTime = starts[-1]
+    path = os.path.join(base, startTime, "summary.dat")
+    if not os.path.isfile(path):
+        return []
+    return [l.split()[:-1] for l in open(path) if l.strip() and not l.startswith("#")]
+
+
+def waitForRows(proc, case, solver, n, timeout=120):
+    """Wait until the run has written n summary rows since its start (or
+    has ended)."""
+    import time
+    t0 = time.time()
+    while time.time() - t0 < timeout and proc.poll() is None:
+        if len(summaryRows(case, solver, None)) >= n:
+            return True
+        time.sleep(0.02)
+    return False
+
+
+def sameFiles(caseA, caseB, time, files, what):
+    """The files of a time directory byte for byte the same in two cases."""
+    differ = [f for f in files
+              if open(os.path.join(caseA, time, f), "rb").read()
+              != open(os.path.join(caseB, time, f), "rb").read()]
+    check(not differ, "%s: %s/%s byte for byte those of %s (differ: %s)"
+          % (what, caseB, time, caseA, differ or "none"))
+
+
+def cloudFiles(case, time, cloud):
+    d = os.path.join(case, time, "lagrangian", cloud)
+    return [os.path.join("lagrangian", cloud, f) for f in sorted(os.listdir(d))]
+
+
+def sameRowsAfter(ref, case, solver, startTime, what):
+    """Summary rows after startTime (all but clockTime) the same as ref's."""
+    rows = summaryRows(case, solver, startTime)
+    refRows = [r for r in summaryRows(ref, solver) if float(r[0]) > float(startTime) * (1 + 1e-12) + 1e-15]
+    check(len(rows) > 0 and rows == refRows,
+          "%s: the %d summary rows after %s are those of the uninterrupted run (%d rows)"
+          % (what, len(rows), startTime, len(refRows)))

@@ -212,6 +212,8 @@ void Foam::runOutMaps::write(const Time& runTime3D)
         runTime3D.globalPath()/"postProcessing"/"hazardMaps"
        /runTime3D.timeName()
     );
+    // Exactly: dictionary entries keep a value as printed
+    const exactPrecision exact;
     maps_->saveMaxima(dict_());
 }
 

@@ -425,21 +425,39 @@ void Foam::particleCloudIO::checkRange
     const label nCmpt = particles.nComponents(f.kind);
     for (label i = 0; i < particles.size(); ++i)
     {
-        // A vector by its magnitude, a scalar by its value
-        scalar v = 0;
-        for (label c = 0; c < nCmpt; ++c)
+        // A scalar by its value, a vector by its magnitude (by its largest
+        // component when that is out of range: its square may overflow)
+        scalar v = particles.column(f.first)[i];
+        if (nCmpt > 1)
         {
-            const double vc = particles.column(f.first + c)[i];
-            v = nCmpt == 1 ? vc : v + vc*vc;
+            scalar largest = 0;
+            for (label c = 0; c < nCmpt; ++c)
+            {
+                const double a = std::abs(particles.column(f.first + c)[i]);
+                largest = a > largest || std::isnan(a) ? a : largest;
+            }
+            v = largest;
+            if (largest > 0 && largest <= hi)
+            {
+                scalar sumSqr = 0;
+                for (label c = 0; c < nCmpt; ++c)
+                {
+                    const double r = particles.column(f.first + c)[i]/largest;
+                    sumSqr += r*r;
+                }
+                v = largest*std::sqrt(sumSqr);
+            }
         }
-        v = nCmpt == 1 ? v : std::sqrt(v);
         if (!(loIncluded ? v >= lo : v > lo) || !(v <= hi))
         {
+            const std::string name
+            (
+                nCmpt == 1 ? std::string(field) : "|" + field + "|"
+            );
             FatalErrorInFunction
-                << dir/field << ": particle " << i << " has "
-                << (nCmpt == 1 ? "" : "|") << field << (nCmpt == 1 ? "" : "|")
+                << dir/field << ": particle " << i << " has " << name.c_str()
                 << " = " << v << "; allowed: " << lo
-                << (loIncluded ? " <= " : " < ") << field;
+                << (loIncluded ? " <= " : " < ") << name.c_str();
             if (hi < GREAT)
             {
                 FatalError<< " <= " << hi;

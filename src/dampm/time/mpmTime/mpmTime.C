@@ -14,6 +14,8 @@ License
 #include "IFstream.H"
 #include "OStringStream.H"
 #include "OSspecific.H"
+#include "Pstream.H"
+#include "exactPrecision.H"
 
 #include <fstream>
 #include <zlib.h>
@@ -58,6 +60,7 @@ void Foam::mpmTime::checkStartTime()
     {
         startWriter_ = writer(dir);
         lastComplete_ = timeName();
+        continueRun();
         return;
     }
     if (s == directoryState::fresh)
@@ -129,9 +132,43 @@ void Foam::mpmTime::startFrom(const instant& t)
     }
     deltaTSave_ = deltaT_;
     startTime_ = value();
+    startedAt_ = value();
     startTimeIndex_ = timeIndex_;
     startWriter_ = writer(timePath());
     lastComplete_ = timeName();
+    continueRun();
+}
+
+
+void Foam::mpmTime::continueRun()
+{
+    // The exact time (the directory's name is rounded to timePrecision)
+    {
+        IFstream is(timePath()/"uniform"/"time");
+        const dictionary timeDict(is);
+        scalar exact = 0;
+        if (timeDict.readIfPresent("value", exact))
+        {
+            value() = userTimeToTime(exact);
+            startedAt_ = value();
+        }
+    }
+    if (writeControl_ != wcRunTime && writeControl_ != wcAdjustableRunTime)
+    {
+        return;
+    }
+    IFstream is(timePath()/"uniform"/recordName);
+    const dictionary record(is);
+    if
+    (
+        record.getOrDefault<word>("writeControl", word::null)
+     == writeControlNames[writeControl_]
+     && record.getOrDefault<scalar>("writeInterval", -1) == writeInterval_
+    )
+    {
+        startTime_ = record.get<scalar>("scheduleStart");
+        writeTimeIndex_ = record.get<label>("writeTimeIndex");
+    }
 }
 
 
@@ -173,7 +210,14 @@ bool Foam::mpmTime::writeRecord() const
             false
         )
     );
+    // The write schedule too, which a restart continues (exactly:
+    // dictionary entries keep a value as printed)
+    const exactPrecision exact;
     record.add("application", application_);
+    record.add("writeControl", writeControlNames[writeControl_]);
+    record.add("writeInterval", writeInterval_);
+    record.add("scheduleStart", startTime_);
+    record.add("writeTimeIndex", writeTimeIndex_);
     return
         record.regIOobject::writeObject
         (
@@ -214,6 +258,7 @@ Foam::mpmTime::mpmTime
 :
     Time(ctrlDictName, args),
     application_(args.executable()),
+    startedAt_(startTime_),
     stopAnnounced_(false)
 {
     catchStopSignals();
@@ -320,9 +365,21 @@ bool Foam::mpmTime::whole(const fileName& file)
 }
 
 
-int Foam::mpmTime::exitCode() const
+Foam::dimensionedScalar Foam::mpmTime::startTime() const
 {
-    return stopSignal_ ? 128 + stopSignal_ : 0;
+    return dimensionedScalar("startTime", dimTime, startedAt_);
+}
+
+
+void Foam::mpmTime::exitIfStopped() const
+{
+    if (stopSignal_)
+    {
+        Info<< "Stopped by signal " << int(stopSignal_) << " at time "
+            << timeName() << " (written): exit code " << 128 + stopSignal_
+            << endl;
+        Pstream::exit(128 + stopSignal_);
+    }
 }
 
 
@@ -357,14 +414,35 @@ bool Foam::mpmTime::writeObject
     const fileName dir(timePath());
     rm(dir/"uniform"/recordName);
 
-    // uniform/time first: files at least as new as it are this write's
+    // uniform/time first: files at least as new as it are this write's.
+    // OpenFOAM's streams end the process when a write fails: caught, to
+    // say what is lost and what is not
     const fileName timeDict(dir/"uniform"/"time");
-    bool written = writeTimeDict() && whole(timeDict);
-    const double since = written ? highResLastModified(timeDict) : 0;
-    written = written && objectRegistry::writeObject(fmt, ver, cmp, valid);
-    const fileNameList broken(written ? cutShort(dir, since) : fileNameList());
+    bool written = false;
+    fileNameList broken;
+    string failure;
+    const bool throwing = FatalError.throwExceptions();
+    const bool throwingIO = FatalIOError.throwExceptions();
+    try
+    {
+        bool ok = writeTimeDict() && whole(timeDict);
+        const double since = ok ? highResLastModified(timeDict) : 0;
+        ok = ok && objectRegistry::writeObject(fmt, ver, cmp, valid);
+        broken = ok ? cutShort(dir, since) : fileNameList();
+        written = ok && broken.empty() && writeRecord();
+    }
+    catch (const IOerror& e)
+    {
+        failure = e.ioFileName() + ": " + e.message();
+    }
+    catch (const error& e)
+    {
+        failure = e.message();
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(throwingIO);
 
-    if (!written || broken.size() || !writeRecord())
+    if (!written)
     {
         FatalErrorInFunction
             << "cannot write time directory " << dir << ": ";
@@ -372,6 +450,10 @@ bool Foam::mpmTime::writeObject
         {
             FatalError<< broken.size() << " file(s) cut short, first "
                 << broken.first();
+        }
+        else if (failure.size())
+        {
+            FatalError<< failure.c_str();
         }
         else
         {
