@@ -61,9 +61,6 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::IO, [&]{ runTime.writeNow(); });
     }
 
-    // The last time directory written (the guard names it)
-    word lastWritten = runTime.timeName();
-
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -107,7 +104,6 @@ int main(int argc, char *argv[])
         {
             #include "writeFields.H"
             timers.run(stepTimers::IO, [&]{ runTime.write(); });
-            lastWritten = runTime.timeName();
         }
     }
 

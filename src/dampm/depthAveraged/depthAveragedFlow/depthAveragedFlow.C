@@ -31,19 +31,6 @@ const Foam::word Foam::depthAveragedFlow::cloudName("dampmCloud");
 
 const Foam::scalar Foam::depthAveragedFlow::splitHMinFraction = 0.01;
 
-const Foam::scalar Foam::depthAveragedFlow::speedLimitFactor = 10;
-
-namespace
-{
-    //- A default derived from the state, to three digits: readable in the
-    //  log, and read back exactly from the state file on restart
-    double threeDigits(const double x)
-    {
-        char digits[32];
-        std::snprintf(digits, sizeof(digits), "%.3g", x);
-        return std::strtod(digits, nullptr);
-    }
-}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -387,8 +374,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
     splitHMinGiven_(dict.found("splitHMin")),
-    speedLimit_(dict.getOrDefault<scalar>("speedLimit", 0)),
-    speedLimitGiven_(dict.found("speedLimit")),
+    speedLimit_(dict),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
     pressureForm_
     (
@@ -436,12 +422,6 @@ Foam::depthAveragedFlow::depthAveragedFlow
         FatalIOErrorInFunction(dict)
             << "splitHMin = " << splitHMin_ << " is invalid; allowed:"
             << " splitHMin >= 0 [m]" << exit(FatalIOError);
-    }
-    if (speedLimitGiven_ && !(speedLimit_ > 0 && std::isfinite(speedLimit_)))
-    {
-        FatalIOErrorInFunction(dict)
-            << "speedLimit = " << speedLimit_ << " is invalid; allowed:"
-            << " finite speedLimit > 0 [m/s]" << exit(FatalIOError);
     }
 
     dictionary shapeDict(dict);
@@ -539,19 +519,17 @@ Foam::depthAveragedFlow::depthAveragedFlow
     massTol_ = 1e-12*mMax;
     if (!splitHMinGiven_)
     {
-        splitHMin_ = threeDigits(splitHMinFraction*maxColumnThickness());
+        splitHMin_ =
+            speedLimit::threeDigits(splitHMinFraction*maxColumnThickness());
     }
-    if (!speedLimitGiven_)
-    {
-        speedLimit_ = threeDigits(speedLimitFactor*speedScale());
-    }
+    speedLimit_.setDefault(speedScale());
     if (rheology_->defaultShearModulus())
     {
         // G = rho g H0/2: elastic wave speed sqrt(2 G/rho) = sqrt(g H0), the
         // gravity-wave speed of the thickest column (doc section 9)
         rheology_->setDefaultShearModulus
         (
-            threeDigits(0.5*rho_*g_*maxColumnThickness())
+            speedLimit::threeDigits(0.5*rho_*g_*maxColumnThickness())
         );
     }
     // A bed flat at Z = 0: the terrain terms of S5 are exactly 0, 0 and 1
@@ -599,8 +577,8 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     {
         os  << "off";
     }
-    os  << nl << "    speed limit     " << speedLimit_ << " m/s (the run stops"
-        << " above it" << (speedLimitGiven_ ? ")" : ", default)");
+    os  << nl << "    speed limit     ";
+    speedLimit_.describe(os);
     os  << nl << "    topography      ";
     topography_->describe(os);
     os  << nl << "    bed friction    ";
@@ -628,7 +606,7 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
     state.set("splitHMin", splitHMin_);
-    state.set("speedLimit", speedLimit_);
+    speedLimit_.writeState(state);
     if (rheology_->defaultShearModulus())
     {
         state.set("shearModulus", rheology_->shearModulus());
@@ -645,10 +623,7 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
     {
         splitHMin_ = state.get<scalar>("splitHMin");
     }
-    if (!speedLimitGiven_)
-    {
-        speedLimit_ = state.get<scalar>("speedLimit");
-    }
+    speedLimit_.readState(state);
     if (rheology_->defaultShearModulus())
     {
         rheology_->setDefaultShearModulus(state.get<scalar>("shearModulus"));

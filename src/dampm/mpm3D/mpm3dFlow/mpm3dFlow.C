@@ -252,7 +252,8 @@ Foam::mpm3dFlow::mpm3dFlow
     J_(-1),
     div_(-1),
     schedule_(grid.geometry()),
-    outflowMass_(0)
+    outflowMass_(0),
+    speedLimit_(dict)
 {
     if (grid.is2D())
     {
@@ -363,14 +364,39 @@ Foam::mpm3dFlow::mpm3dFlow
     }
     settings_.massTol = 1e-12*mMax;
     flagged_.reserve(particles_.size());
+    speedLimit_.setDefault(speedScale());
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::mpm3dFlow::speedScale() const
+{
+    const gridGeometry& g = grid_.geometry();
+    const scalar gMag = std::sqrt
+    (
+        sqr(settings_.g[0]) + sqr(settings_.g[1]) + sqr(settings_.g[2])
+    );
+    double maxU2 = 0;
+    for (label i = 0; i < particles_.size(); ++i)
+    {
+        double u2 = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            u2 += sqr(particles_.column(particleArrays::UX + d)[i]);
+        }
+        maxU2 = max(maxU2, u2);
+    }
+    return
+        material_->waveSpeed() + std::sqrt(maxU2)
+      + std::sqrt(2*gMag*(g.upper(2) - g.origin[2]));
+}
+
+
 void Foam::mpm3dFlow::writeState(dictionary& state) const
 {
     state.set("outflowMass", outflowMass_);
+    speedLimit_.writeState(state);
     state.set("massTolerance", settings_.massTol);
     forAll(barriers_, b)
     {
@@ -387,6 +413,7 @@ void Foam::mpm3dFlow::readState(const dictionary& state)
 {
     outflowMass_ = state.get<scalar>("outflowMass");
     settings_.massTol = state.get<scalar>("massTolerance");
+    speedLimit_.readState(state);
     // A barrier added for the restart has let nothing pass yet
     forAll(barriers_, b)
     {
@@ -431,6 +458,8 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
     {
         os  << "none (not computed)";
     }
+    os  << nl << "    speed limit: ";
+    speedLimit_.describe(os);
     os  << nl << "    sides:";
     const char* axes = "xyz";
     for (int d = 0; d < 3; ++d)

@@ -1,0 +1,102 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "speedLimit.H"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::speedLimit::factor = 10;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::speedLimit::speedLimit(const dictionary& dict)
+:
+    limit_(dict.getOrDefault<scalar>("speedLimit", 0)),
+    given_(dict.found("speedLimit"))
+{
+    if (given_ && !(limit_ > 0 && std::isfinite(limit_)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "speedLimit = " << limit_ << " is invalid; allowed:"
+            << " finite speedLimit > 0 [m/s]" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::speedLimit::threeDigits(const scalar x)
+{
+    char digits[32];
+    std::snprintf(digits, sizeof(digits), "%.3g", x);
+    return std::strtod(digits, nullptr);
+}
+
+
+void Foam::speedLimit::setDefault(const scalar speedScale)
+{
+    if (!given_)
+    {
+        limit_ = threeDigits(factor*speedScale);
+    }
+}
+
+
+void Foam::speedLimit::writeState(dictionary& state) const
+{
+    state.set("speedLimit", limit_);
+}
+
+
+void Foam::speedLimit::readState(const dictionary& state)
+{
+    if (!given_)
+    {
+        limit_ = state.get<scalar>("speedLimit");
+    }
+}
+
+
+void Foam::speedLimit::check
+(
+    const scalar speed,
+    const word& what,
+    const Time& runTime,
+    const word& lastWritten
+) const
+{
+    if (speed > limit_)
+    {
+        FatalErrorInFunction
+            << what.c_str() << " " << speed << " m/s at time "
+            << runTime.timeName() << " (deltaT " << runTime.deltaTValue()
+            << " s) exceeds speedLimit " << limit_ << " m/s ("
+            << (given_ ? "given" : "default: 10 x the speed scale of the start")
+            << "): the state is taken as blown up; nothing written for it."
+            << " Last good time directory: "
+            << (lastWritten.empty() ? word("none") : lastWritten)
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::speedLimit::describe(Ostream& os) const
+{
+    os  << limit_ << " m/s (the run stops above it"
+        << (given_ ? ")" : ", default)");
+}
+
+
+// ************************************************************************* //
