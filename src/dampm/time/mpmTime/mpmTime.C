@@ -153,7 +153,12 @@ void Foam::mpmTime::continueRun()
             startedAt_ = value();
         }
     }
-    if (writeControl_ != wcRunTime && writeControl_ != wcAdjustableRunTime)
+    // The schedule of a run of this application (not of a conversion)
+    if
+    (
+        !restart()
+     || (writeControl_ != wcRunTime && writeControl_ != wcAdjustableRunTime)
+    )
     {
         return;
     }
