@@ -51,6 +51,7 @@ Description
 #include "timeSeriesFile.H"
 #include "runOutMaps.H"
 #include "runOutCase.H"
+#include "mpmTimeControls.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -91,6 +92,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    mpmTimeControls::checkControlDict(args.path(), false);
     #include "createTime.H"
     #include "createMesh.H"
 
