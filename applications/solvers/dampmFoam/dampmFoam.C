@@ -40,6 +40,7 @@ Description
 #include "timeSeriesFile.H"
 #include "stepTimers.H"
 #include "mpmTimeControls.H"
+#include "particleMemory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -52,6 +53,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     mpmTimeControls::checkControlDict(args.path());
+    particleMemory::exitOnOutOfMemory();
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"

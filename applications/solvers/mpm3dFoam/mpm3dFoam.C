@@ -41,6 +41,7 @@ Description
 #include "stepTimers.H"
 #include "runOutMaps.H"
 #include "mpmTimeControls.H"
+#include "particleMemory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -53,6 +54,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     mpmTimeControls::checkControlDict(args.path());
+    particleMemory::exitOnOutOfMemory();
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"

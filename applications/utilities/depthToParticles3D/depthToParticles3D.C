@@ -52,6 +52,7 @@ Description
 #include "runOutMaps.H"
 #include "runOutCase.H"
 #include "mpmTimeControls.H"
+#include "particleMemory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -93,6 +94,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     mpmTimeControls::checkControlDict(args.path(), false);
+    particleMemory::exitOnOutOfMemory();
     #include "createTime.H"
     #include "createMesh.H"
 

@@ -13,6 +13,7 @@ License
 #include "visitShape.H"
 #include "transfers.H"
 #include "particleCloudIO.H"
+#include "particleMemory.H"
 
 #include <algorithm>
 #include <cstdio>
@@ -166,6 +167,10 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
         FatalErrorInFunction
             << "the release puts no mass inside the domain" << exit(FatalError);
     }
+    particleMemory::reserve
+    (
+        particles_, x.size(), "the release (constant/dampmProperties)", g, n
+    );
 
     const label first = particles_.append(label(x.size()));
     for (size_t k = 0; k < x.size(); ++k)

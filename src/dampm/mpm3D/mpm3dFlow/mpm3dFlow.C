@@ -12,6 +12,7 @@ License
 #include "orderedSums.H"
 #include "visitShape.H"
 #include "particleCloudIO.H"
+#include "particleMemory.H"
 #include "Time.H"
 #include <numeric>
 
@@ -106,6 +107,12 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
         const scalar zs =
             dict.getOrDefault<scalar>("freeSurface", box.max().z());
+        particleMemory::reserve
+        (
+            particles_, particleMemory::seedsInBox(g, n, box),
+            "the initial region " + e.keyword() + " (constant/mpm3dProperties)",
+            g, n
+        );
 
         std::vector<point> pts;
         for (label k = 0; k < g.nCells[2]*n; ++k)
