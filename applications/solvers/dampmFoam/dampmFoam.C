@@ -41,6 +41,7 @@ Description
 #include "stepTimers.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

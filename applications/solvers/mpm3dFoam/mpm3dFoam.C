@@ -42,6 +42,7 @@ Description
 #include "runOutMaps.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

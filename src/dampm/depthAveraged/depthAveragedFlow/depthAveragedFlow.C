@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedFlow.H"
+#include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
 #include "transfers.H"
@@ -55,6 +56,7 @@ Foam::scalar Foam::depthAveragedFlow::readPositive
     const word& key
 )
 {
+    knownKeywords::add(dict, {key});
     const scalar value = dict.get<scalar>(key);
     if (!(value > 0))
     {
@@ -412,6 +414,14 @@ Foam::depthAveragedFlow::depthAveragedFlow
     terrainFree_(false),
     forcesDone_(false)
 {
+    knownKeywords::add
+    (
+        dict,
+        {
+            "rho", "particlesPerCell", "hMin", "splitRatio", "splitHMin",
+            "speedLimit", "slopeCorrection", "pressureForm", "release"
+        }
+    );
     if (!grid.is2D())
     {
         FatalErrorInFunction

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpm3dFlow.H"
+#include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
 #include "particleCloudIO.H"
@@ -95,6 +96,10 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 << " }" << exit(FatalIOError);
         }
         const dictionary& dict = e.dict();
+        knownKeywords::add
+        (
+            dict, {"type", "min", "max", "U", "hydrostatic", "freeSurface"}
+        );
         const word type = dict.get<word>("type");
         if (type != "box")
         {
@@ -261,6 +266,14 @@ Foam::mpm3dFlow::mpm3dFlow
     schedule_(grid.geometry()),
     outflowMass_(0)
 {
+    knownKeywords::add
+    (
+        dict,
+        {
+            "particlesPerCell", "flipRatio", "damping", "barriers",
+            "initialRegions"
+        }
+    );
     if (grid.is2D())
     {
         FatalErrorInFunction
