@@ -16,7 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "particleMemory.H"
-#include "error.H"
+#include "testCase.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <new>
@@ -29,35 +29,10 @@ namespace
 
 gridGeometry grid3D()
 {
-    gridGeometry g;
-    g.dim = 3;
-    g.origin[0] = -1;
-    g.origin[1] = 2;
-    g.origin[2] = 0.5;
-    g.dx[0] = 0.5;
-    g.dx[1] = 0.25;
-    g.dx[2] = 1;
-    g.nCells[0] = 7;
-    g.nCells[1] = 5;
-    g.nCells[2] = 3;
+    // dim, origin, cell sizes, their inverses (finalise), cells per axis
+    gridGeometry g{3, {-1, 2, 0.5}, {0.5, 0.25, 1}, {}, {7, 5, 3}};
     g.finalise();
     return g;
-}
-
-
-//- The message of the FatalError that f raises ("" if none)
-template<class F>
-std::string fatalMessage(F f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& err)
-    {
-        return err.message();
-    }
-    return "";
 }
 
 
@@ -133,7 +108,7 @@ TEST(particleMemory, BytesPerParticleCountEveryColumn)
 TEST(particleMemory, RequestBeyondLabelsIsRefusedWithTheCount)
 {
     particleArrays p;
-    const std::string msg = fatalMessage
+    const std::string msg = foamErrorMessage
     (
         [&]{ particleMemory::reserve(p, 3e9, "the test's region"); }
     );
@@ -164,7 +139,7 @@ TEST(particleMemory, RequestBeyondTheMemoryIsRefusedBeforeAllocating)
         );
     }
     const double n = std::ceil(10*free/particleMemory::bytesPerParticle(p));
-    const std::string msg = fatalMessage
+    const std::string msg = foamErrorMessage
     (
         [&]{ particleMemory::reserve(p, n, "the test's release", g, 8); }
     );

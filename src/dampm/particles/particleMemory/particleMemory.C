@@ -137,6 +137,10 @@ void Foam::particleMemory::reserve
     const std::string& setBy
 )
 {
+    if (!(n > 0))
+    {
+        return;
+    }
     const double perParticle = bytesPerParticle(particles);
     const double needed = n*perParticle;
     const double free = available();
@@ -157,7 +161,8 @@ void Foam::particleMemory::reserve
     {
         WarningInFunction
             << n << " particles requested by " << setBy.c_str() << " need "
-            << needed << " bytes, " << 100*needed/free << " % of the "
+            << needed << " bytes, " << label(100*needed/free + 0.5)
+            << " % of the "
             << free << " bytes available: the run may swap or be stopped"
             << " by the system" << endl;
     }
