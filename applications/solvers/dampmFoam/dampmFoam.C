@@ -20,8 +20,9 @@ Description
     The method: doc/dampmFoam-discretisation.md.
 
     Reads constant/dampmProperties, constant/g and system/controlDict
-    (adjustTimeStep, maxCo, maxDeltaT); writes the particle cloud dampmCloud,
-    the grid fields h, U, Z and the hazard maps at every write time, and
+    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT); writes the particle cloud
+    dampmCloud, the grid fields h, U, Z and the hazard maps at every write
+    time, and
     postProcessing/dampmFoam/<startTime>/summary.dat every step.
     With a handOff sub-dictionary it ends the run-out by itself, writing the
     time for depthToParticles3D, at a set time or when the front comes
@@ -40,6 +41,9 @@ Description
 #include "handOff.H"
 #include "timeSeriesFile.H"
 #include "stepTimers.H"
+#include "mpmTimeControls.H"
+#include "particleMemory.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -21,8 +21,8 @@ Description
     with contact at the grid nodes. The method: doc/mpm3dFoam.md.
 
     Reads constant/mpm3dProperties, constant/g and system/controlDict
-    (adjustTimeStep, maxCo, maxDeltaT); writes the particle cloud mpm3dCloud
-    and the node velocity U at every write time, and every step
+    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT); writes the particle cloud
+    mpm3dCloud and the node velocity U at every write time, and every step
     postProcessing/mpm3dFoam/<startTime>/summary.dat and energy.dat and, for
     every barrier, postProcessing/<barrier>/<startTime>/force.dat (and
     overtopping.dat when it measures overtopping).
@@ -42,6 +42,9 @@ Description
 #include "timeSeriesFile.H"
 #include "stepTimers.H"
 #include "runOutMaps.H"
+#include "mpmTimeControls.H"
+#include "particleMemory.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -52,6 +52,8 @@ Description
 #include "timeSeriesFile.H"
 #include "runOutMaps.H"
 #include "runOutCase.H"
+#include "mpmTimeControls.H"
+#include "particleMemory.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -95,6 +97,8 @@ int main(int argc, char *argv[])
 
     // The 3D case's time: it writes the start of the 3D run as a complete
     // time directory, whatever that time held before
+    mpmTimeControls::checkControlDict(args.path(), false);
+    particleMemory::exitOnOutOfMemory();
     Info<< "Create time\n" << endl;
     mpmTime runTime(Time::controlDictName, args, false);
     #include "createMesh.H"

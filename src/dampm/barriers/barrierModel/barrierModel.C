@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "barrierModel.H"
+#include "knownKeywords.H"
 #include "DynamicField.H"
 #include "orderedSums.H"
 #include <algorithm>
@@ -109,6 +110,15 @@ Foam::barrierModel::barrierModel
     peakTime_(0),
     passedOutflow_(0)
 {
+    knownKeywords::add
+    (
+        dict,
+        {
+            "contact", "frictionCoefficient", "writePressure",
+            "overtoppingDirection"
+        }
+    );
+
     if (contact_ == contactType::Coulomb)
     {
         friction_ = dict.get<scalar>("frictionCoefficient");

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "boxBarrier.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -35,6 +36,8 @@ Foam::barrierModels::boxBarrier::boxBarrier
     barrierModel(name, dict, caseDir),
     box_(dict.get<point>("min"), dict.get<point>("max"))
 {
+    knownKeywords::add(dict, {"min", "max"});
+
     if (!(cmptMin(box_.span()) > 0))
     {
         FatalIOErrorInFunction(dict)

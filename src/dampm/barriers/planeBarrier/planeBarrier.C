@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "planeBarrier.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -36,6 +37,8 @@ Foam::barrierModels::planeBarrier::planeBarrier
     origin_(dict.get<point>("point")),
     normal_(dict.get<vector>("normal"))
 {
+    knownKeywords::add(dict, {"point", "normal"});
+
     if (!(mag(normal_) > 0))
     {
         FatalIOErrorInFunction(dict)

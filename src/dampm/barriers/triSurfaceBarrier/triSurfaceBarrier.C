@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "triSurfaceBarrier.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "OSspecific.H"
 #include <fstream>
@@ -128,6 +129,8 @@ Foam::barrierModels::triSurfaceBarrier::triSurfaceBarrier
     barrierModel(name, dict, caseDir),
     file_(dict.get<fileName>("file"))
 {
+    knownKeywords::add(dict, {"file"});
+
     readSurface();
 }
 

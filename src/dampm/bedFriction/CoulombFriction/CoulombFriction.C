@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "CoulombFriction.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 
@@ -35,6 +36,8 @@ Foam::bedFrictionModels::CoulombFriction::CoulombFriction
     tanPhi_(tan(readFrictionAngle()*constant::mathematical::pi/180)),
     pA_(coeffs.getOrDefault<scalar>("pA", 0))
 {
+    knownKeywords::add(coeffs, {"pA"});
+
     if (!(pA_ >= 0))
     {
         FatalIOErrorInFunction(coeffs)

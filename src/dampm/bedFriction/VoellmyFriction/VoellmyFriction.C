@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "VoellmyFriction.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -33,6 +34,8 @@ Foam::bedFrictionModels::VoellmyFriction::VoellmyFriction
     CoulombFriction(coeffs),
     xi_(coeffs.get<scalar>("xi"))
 {
+    knownKeywords::add(coeffs, {"xi"});
+
     if (!(xi_ > 0))
     {
         FatalIOErrorInFunction(coeffs)

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bedFrictionModel.H"
+#include "knownKeywords.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -24,6 +25,7 @@ namespace Foam
 
 Foam::scalar Foam::bedFrictionModel::readFrictionAngle() const
 {
+    knownKeywords::add(coeffs_, {"phi"});
     const scalar phi = coeffs_.get<scalar>("phi");
     if (!(phi >= 0 && phi < 90))
     {

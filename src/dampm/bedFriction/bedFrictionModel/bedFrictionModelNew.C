@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bedFrictionModel.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -20,6 +21,10 @@ Foam::autoPtr<Foam::bedFrictionModel> Foam::bedFrictionModel::New
 {
     // Default: a term the case does not select costs nothing
     const word modelType(dict.getOrDefault<word>("bedFriction", "none"));
+    knownKeywords::addSelector
+    (
+        dict, "bedFriction", dictionaryConstructorTablePtr_->sortedToc()
+    );
 
     return autoPtr<bedFrictionModel>
     (

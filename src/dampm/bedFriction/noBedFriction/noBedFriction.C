@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noBedFriction.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -28,7 +29,9 @@ namespace bedFrictionModels
 Foam::bedFrictionModels::noBedFriction::noBedFriction(const dictionary& coeffs)
 :
     bedFrictionModel(coeffs)
-{}
+{
+    knownKeywords::add(coeffs, {});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

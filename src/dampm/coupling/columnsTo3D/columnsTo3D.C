@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "columnsTo3D.H"
+#include "particleMemory.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -180,6 +181,7 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
     totals t;
     std::vector<column> geo(nCol);
     std::vector<char> converted(nCol, 0);
+    double nParticles = 0;
     for (label c = 0; c < nCol; ++c)
     {
         column& col = geo[c];
@@ -235,12 +237,20 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
             }
         }
         converted[c] = inside;
+        nParticles += inside ? double(col.na)*col.nb*col.nz : 0;
         if (!inside)
         {
             ++t.unconvertedColumns;
             t.unconvertedMass += cm[c];
         }
     }
+
+    particleMemory::reserve
+    (
+        particles3D, nParticles, "the conversion of " + std::to_string(nCol)
+      + " columns at the 3D particle spacing (particlesPerCell of"
+        " constant/mpm3dProperties and the 3D mesh)"
+    );
 
     // Pass 2: the particles
     const label sigma = particles3D.field("sigma").first;

@@ -10,6 +10,7 @@ License
 
 #include "runOutCase.H"
 #include "OSspecific.H"
+#include "mpmTimeControls.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -23,6 +24,7 @@ Foam::runOutCase::runOutCase(const fileName& path)
             << "the run-out case " << path_ << " is missing (no case at it:"
             << " no system/controlDict)" << exit(FatalError);
     }
+    mpmTimeControls::checkControlDict(path_, false);
     runTime_.reset
     (
         new Time(Time::controlDictName, path_.path(), fileName(path_.name()))

@@ -9,10 +9,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedFlow.H"
+#include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
 #include "transfers.H"
 #include "particleCloudIO.H"
+#include "particleMemory.H"
 
 #include <algorithm>
 #include <cstdio>
@@ -41,6 +43,7 @@ Foam::scalar Foam::depthAveragedFlow::readPositive
     const word& key
 )
 {
+    knownKeywords::add(dict, {key});
     const scalar value = dict.get<scalar>(key);
     if (!(value > 0))
     {
@@ -153,6 +156,10 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
         FatalErrorInFunction
             << "the release puts no mass inside the domain" << exit(FatalError);
     }
+    particleMemory::reserve
+    (
+        particles_, x.size(), "the release (constant/dampmProperties)", g, n
+    );
 
     const label first = particles_.append(label(x.size()));
     for (size_t k = 0; k < x.size(); ++k)
@@ -392,6 +399,14 @@ Foam::depthAveragedFlow::depthAveragedFlow
     terrainFree_(false),
     forcesDone_(false)
 {
+    knownKeywords::add
+    (
+        dict,
+        {
+            "rho", "particlesPerCell", "hMin", "splitRatio", "splitHMin",
+            "slopeCorrection", "pressureForm", "release"
+        }
+    );
     if (!grid.is2D())
     {
         FatalErrorInFunction

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "handOff.H"
+#include "knownKeywords.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 
@@ -68,11 +69,16 @@ Foam::handOff::handOff
     searchBox_(boundBox::invertedBox),
     nearest_(GREAT)
 {
+    knownKeywords::add(dampmProperties, {"handOff"});
     if (!dampmProperties.found("handOff"))
     {
         return;
     }
     const dictionary& dict = dampmProperties.subDict("handOff");
+    knownKeywords::add
+    (
+        dict, {"time", "region", "regionCase", "distance", "frontHeight"}
+    );
     const label nWays =
         label(dict.found("time")) + label(dict.found("region"))
       + label(dict.found("regionCase"));

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialModel.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -27,6 +28,7 @@ Foam::scalar Foam::materialModel::readCoeff
     const bool positive
 ) const
 {
+    knownKeywords::add(coeffs_, {key});
     const scalar value = coeffs_.get<scalar>(key);
     if (positive ? !(value > 0) : !(value >= 0))
     {
@@ -44,6 +46,7 @@ Foam::scalar Foam::materialModel::readCoeffOrDefault
     const scalar deflt
 ) const
 {
+    knownKeywords::add(coeffs_, {key});
     return coeffs_.found(key) ? readCoeff(key, false) : deflt;
 }
 
@@ -62,7 +65,9 @@ Foam::materialModel::materialModel
     (
         coeffs.getOrDefault<bool>("volumetricSmoothing", smoothByDefault)
     )
-{}
+{
+    knownKeywords::add(coeffs, {"volumetricSmoothing"});
+}
 
 
 // ************************************************************************* //

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialModel.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -19,6 +20,10 @@ Foam::autoPtr<Foam::materialModel> Foam::materialModel::New
 )
 {
     const word modelType(dict.get<word>("material"));
+    knownKeywords::addSelector
+    (
+        dict, "material", dictionaryConstructorTablePtr_->sortedToc()
+    );
 
     return autoPtr<materialModel>
     (

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "viscoplasticFluid.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -65,6 +66,8 @@ Foam::materialModels::viscoplasticFluid::viscoplasticFluid
         )
     )
 {
+    knownKeywords::add(coeffs, {"gamma", "pMin"});
+
     if (!(gamma_ >= 1))
     {
         FatalIOErrorInFunction(coeffs)

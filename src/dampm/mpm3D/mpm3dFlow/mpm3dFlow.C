@@ -9,9 +9,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpm3dFlow.H"
+#include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
 #include "particleCloudIO.H"
+#include "particleMemory.H"
 #include "Time.H"
 #include <numeric>
 
@@ -94,6 +96,10 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 << " }" << exit(FatalIOError);
         }
         const dictionary& dict = e.dict();
+        knownKeywords::add
+        (
+            dict, {"type", "min", "max", "U", "hydrostatic", "freeSurface"}
+        );
         const word type = dict.get<word>("type");
         if (type != "box")
         {
@@ -106,6 +112,12 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
         const scalar zs =
             dict.getOrDefault<scalar>("freeSurface", box.max().z());
+        particleMemory::reserve
+        (
+            particles_, particleMemory::seedsInBox(g, n, box),
+            "the initial region " + e.keyword() + " (constant/mpm3dProperties)",
+            g, n
+        );
 
         std::vector<point> pts;
         for (label k = 0; k < g.nCells[2]*n; ++k)
@@ -255,6 +267,14 @@ Foam::mpm3dFlow::mpm3dFlow
     outflowMass_(0),
     speedLimit_(dict)
 {
+    knownKeywords::add
+    (
+        dict,
+        {
+            "particlesPerCell", "flipRatio", "damping", "barriers",
+            "initialRegions"
+        }
+    );
     if (grid.is2D())
     {
         FatalErrorInFunction

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "boxRelease.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -34,6 +35,8 @@ Foam::releaseModels::boxRelease::boxRelease
 :
     polygonRelease(dict, topography, caseDir, false)
 {
+    knownKeywords::add(dict, {"min", "max"});
+
     const vector2D lo(dict.get<vector2D>("min"));
     const vector2D hi(dict.get<vector2D>("max"));
     if (!(hi.x() > lo.x() && hi.y() > lo.y()))

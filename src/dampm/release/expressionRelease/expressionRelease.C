@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "expressionRelease.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -34,7 +35,9 @@ Foam::releaseModels::expressionRelease::expressionRelease
 :
     releaseModel(dict, topography, caseDir),
     height_(dict, "height", wordList({"x", "y", "Z"}))
-{}
+{
+    knownKeywords::add(dict, {"height"});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polygonRelease.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,6 +39,7 @@ void Foam::releaseModels::polygonRelease::setPolygon
             << " vertices; allowed: at least 3" << exit(FatalIOError);
     }
 
+    knownKeywords::add(dict_, {"surfaceLevel", "thickness"});
     const bool hasLevel = dict_.found("surfaceLevel");
     const bool hasThickness = dict_.found("thickness");
     if (hasLevel == hasThickness)
@@ -74,6 +76,7 @@ Foam::releaseModels::polygonRelease::polygonRelease
 {
     if (readVertices)
     {
+        knownKeywords::add(dict, {"vertices"});
         setPolygon(dict.get<List<vector2D>>("vertices"));
     }
 }

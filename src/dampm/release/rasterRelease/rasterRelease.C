@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rasterRelease.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -34,6 +35,8 @@ Foam::releaseModels::rasterRelease::rasterRelease
 :
     releaseModel(dict, topography, caseDir)
 {
+    knownKeywords::add(dict, {"file"});
+
     fileName file(dict.get<fileName>("file"));
     file.expand();
     raster_.reset

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "releaseModel.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,7 +33,9 @@ Foam::releaseModel::releaseModel
     topography_(topography),
     caseDir_(caseDir),
     U_(dict.getOrDefault<vector2D>("U", vector2D::zero))
-{}
+{
+    knownKeywords::add(dict, {"U"});
+}
 
 
 // ************************************************************************* //

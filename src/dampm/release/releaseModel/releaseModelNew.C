@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "releaseModel.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -21,6 +22,7 @@ Foam::autoPtr<Foam::releaseModel> Foam::releaseModel::New
 )
 {
     const word modelType(dict.get<word>("type"));
+    knownKeywords::add(dict, {"type"});
 
     return autoPtr<releaseModel>
     (

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "NewtonianRheology.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -34,6 +35,8 @@ Foam::rheologyModels::NewtonianRheology::NewtonianRheology
     mu_(readNonNegative("mu")),
     basalShear_(coeffs.getOrDefault<bool>("basalShear", false))
 {
+    knownKeywords::add(coeffs, {"basalShear"});
+
     readShearModulus(false);
 }
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "inviscidRheology.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -31,7 +32,9 @@ Foam::rheologyModels::inviscidRheology::inviscidRheology
 )
 :
     rheologyModel(coeffs)
-{}
+{
+    knownKeywords::add(coeffs, {});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rheologyModel.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -23,6 +24,7 @@ namespace Foam
 
 Foam::scalar Foam::rheologyModel::readNonNegative(const word& key) const
 {
+    knownKeywords::add(coeffs_, {key});
     const scalar value = coeffs_.get<scalar>(key);
     if (!(value >= 0))
     {
@@ -53,6 +55,7 @@ void Foam::rheologyModel::describeStress(Ostream& os) const
 
 void Foam::rheologyModel::readShearModulus(const bool defaultMaxwell)
 {
+    knownKeywords::add(coeffs_, {"shearModulus"});
     if (coeffs_.found("shearModulus"))
     {
         G_ = readNonNegative("shearModulus");

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rheologyModel.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -20,6 +21,10 @@ Foam::autoPtr<Foam::rheologyModel> Foam::rheologyModel::New
 {
     // Default: a term the case does not select costs nothing
     const word modelType(dict.getOrDefault<word>("rheology", "inviscid"));
+    knownKeywords::addSelector
+    (
+        dict, "rheology", dictionaryConstructorTablePtr_->sortedToc()
+    );
 
     return autoPtr<rheologyModel>
     (

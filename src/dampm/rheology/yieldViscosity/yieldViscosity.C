@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "yieldViscosity.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -29,6 +30,7 @@ double Foam::yieldViscosity::readCoeff
     const bool positive
 )
 {
+    knownKeywords::add(dict, {key});
     const scalar value = dict.get<scalar>(key);
     if (positive ? !(value > 0) : !(value >= 0))
     {
@@ -70,6 +72,7 @@ Foam::yieldViscosity::yieldViscosity
         return;
     }
 
+    knownKeywords::add(dict, {"regularisation", "m", "muMax"});
     tauY_ = readCoeff(dict, "tauY", false);
     regularisation_ = regularisationNames.getOrDefault
     (

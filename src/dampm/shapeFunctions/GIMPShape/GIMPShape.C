@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "GIMPShape.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -34,6 +35,8 @@ Foam::shapeFunctions::GIMPShape::GIMPShape
     shapeFunction(coeffs),
     lp_(coeffs.getOrDefault<scalar>("particleHalfWidth", particleHalfWidth))
 {
+    knownKeywords::add(coeffs, {"particleHalfWidth"});
+
     if (!(lp_ > 0 && lp_ <= 0.5))
     {
         FatalIOErrorInFunction(coeffs)

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "linearShape.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -32,7 +33,9 @@ Foam::shapeFunctions::linearShape::linearShape
 )
 :
     shapeFunction(coeffs)
-{}
+{
+    knownKeywords::add(coeffs, {});
+}
 
 
 // ************************************************************************* //

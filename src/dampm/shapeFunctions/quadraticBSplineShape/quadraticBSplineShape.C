@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "quadraticBSplineShape.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -32,7 +33,9 @@ Foam::shapeFunctions::quadraticBSplineShape::quadraticBSplineShape
 )
 :
     shapeFunction(coeffs)
-{}
+{
+    knownKeywords::add(coeffs, {});
+}
 
 
 // ************************************************************************* //

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "shapeFunction.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -20,6 +21,10 @@ Foam::autoPtr<Foam::shapeFunction> Foam::shapeFunction::New
 )
 {
     const word modelType(dict.get<word>("shapeFunction"));
+    knownKeywords::addSelector
+    (
+        dict, "shapeFunction", dictionaryConstructorTablePtr_->sortedToc()
+    );
 
     return autoPtr<shapeFunction>
     (

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "expressionTopography.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,7 +39,9 @@ Foam::topographyModels::expressionTopography::expressionTopography
 :
     topographyModel(coeffs, caseDir),
     Z_(coeffs, "Z", wordList({"x", "y"}))
-{}
+{
+    knownKeywords::add(coeffs, {"Z"});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "flatTopography.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -33,7 +34,9 @@ Foam::topographyModels::flatTopography::flatTopography
 :
     topographyModel(coeffs, caseDir),
     Z0_(coeffs.getOrDefault<scalar>("Z0", 0))
-{}
+{
+    knownKeywords::add(coeffs, {"Z0"});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

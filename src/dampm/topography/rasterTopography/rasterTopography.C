@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rasterTopography.H"
+#include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -46,6 +47,7 @@ Foam::topographyModels::rasterTopography::rasterTopography
         )
     )
 {
+    knownKeywords::add(coeffs, {"noData", "offset"});
     raster_->setOffset
     (
         coeffs.getOrDefault<vector2D>("offset", raster_->mapLowerLeft())

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "topographyModel.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -55,6 +56,7 @@ void Foam::topographyModel::sampleNodes
 
 Foam::fileName Foam::topographyModel::caseFile(const word& key) const
 {
+    knownKeywords::add(coeffs_, {key});
     fileName file(coeffs_.get<fileName>(key));
     file.expand();
     return file.isAbsolute() ? file : caseDir_/file;

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "topographyModel.H"
+#include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
@@ -21,6 +22,10 @@ Foam::autoPtr<Foam::topographyModel> Foam::topographyModel::New
 {
     // Default: flat, which costs nothing
     const word modelType(dict.getOrDefault<word>("topography", "flat"));
+    knownKeywords::addSelector
+    (
+        dict, "topography", dictionaryConstructorTablePtr_->sortedToc()
+    );
 
     return autoPtr<topographyModel>
     (

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "speedLimit.H"
+#include "knownKeywords.H"
 
 #include <cmath>
 #include <cstdio>
@@ -26,6 +27,7 @@ Foam::speedLimit::speedLimit(const dictionary& dict)
     limit_(dict.getOrDefault<scalar>("speedLimit", 0)),
     given_(dict.found("speedLimit"))
 {
+    knownKeywords::add(dict, {"speedLimit"});
     if (given_ && !(limit_ > 0 && std::isfinite(limit_)))
     {
         FatalIOErrorInFunction(dict)
