@@ -33,7 +33,14 @@ Foam::topographyModels::flatTopography::flatTopography
 :
     topographyModel(coeffs, caseDir),
     Z0_(coeffs.getOrDefault<scalar>("Z0", 0))
-{}
+{
+    if (!(std::abs(Z0_) <= maxAbsZ))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Z0 = " << Z0_ << " is invalid; allowed: |Z0| <= " << maxAbsZ
+            << " m" << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

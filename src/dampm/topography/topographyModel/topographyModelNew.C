@@ -22,11 +22,13 @@ Foam::autoPtr<Foam::topographyModel> Foam::topographyModel::New
     // Default: flat, which costs nothing
     const word modelType(dict.getOrDefault<word>("topography", "flat"));
 
-    return autoPtr<topographyModel>
+    autoPtr<topographyModel> model
     (
         modelConstructor<topographyModel>(dict, "topography", modelType)
         (dict.optionalSubDict(modelType + "Coeffs"), caseDir)
     );
+    model->byDefault_ = !dict.found("topography");
+    return model;
 }
 
 
