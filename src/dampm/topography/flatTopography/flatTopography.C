@@ -10,6 +10,8 @@ License
 
 #include "flatTopography.H"
 #include "addToRunTimeSelectionTable.H"
+#include "IOmanip.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,6 +39,7 @@ Foam::topographyModels::flatTopography::flatTopography
     if (!(std::abs(Z0_) <= maxAbsZ))
     {
         FatalIOErrorInFunction(coeffs)
+            << setprecision(12)
             << "Z0 = " << Z0_ << " is invalid; allowed: |Z0| <= " << maxAbsZ
             << " m" << exit(FatalIOError);
     }
