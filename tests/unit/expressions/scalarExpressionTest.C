@@ -10,12 +10,14 @@ Description
     Expressions: precedence and associativity, every function against the
     C++ standard library, the ternary of a piecewise slope, a hemispherical
     mound, the order of the variables, parse errors that point at the
-    error, and OpenMP evaluation that agrees with serial evaluation bit for
+    error, constants folded to NaN and inf under the solvers' floating-point
+    traps, and OpenMP evaluation that agrees with serial evaluation bit for
     bit. Prints the evaluations per second of the hemisphere.
 
 \*---------------------------------------------------------------------------*/
 
 #include "scalarExpression.H"
+#include "fpTrapMask.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
 #include "testCase.H"
@@ -326,6 +328,22 @@ TEST(scalarExpression, ParseErrorsNameTheKeywordAndPointAtTheError)
         file = err.ioFileName();
     }
     EXPECT_EQ(file, "constant/topographyDict");
+}
+
+
+TEST(scalarExpression, ConstantsFoldUnderTheSolversTrapsToNaNAndInf)
+{
+    // Folding 1/0 or an overflow while parsing was a SIGFPE under the
+    // solvers' traps; it is a value now, found where it is evaluated
+    const solverFpTraps traps;
+    const scalarExpression inf("x + 1/0", {"x"}, "test");
+    const scalarExpression overflow("1e300*1e300 - x", {"x"}, "test");
+    const scalarExpression nan("x*sqrt(-1)", {"x"}, "test");
+    const double x = 2;
+    fpTrapMask masked;
+    EXPECT_TRUE(std::isinf(inf.value(&x)));
+    EXPECT_TRUE(std::isinf(overflow.value(&x)));
+    EXPECT_TRUE(std::isnan(nan.value(&x)));
 }
 
 

@@ -11,17 +11,23 @@ Description
     CRLF) read with the north row first; a planar terrain interpolated
     exactly with its exact gradient; local coordinates and clamping; ASCII
     and GeoTIFF round trips; the NODATA policies; every malformed file
-    refused with an error that names the file and the keyword; the real
+    refused with an error that names the file and the keyword; values that
+    are not decimal numbers (hex, trailing characters), out of range or
+    beyond the caller's bound refused with their line, under the solvers'
+    floating-point traps; NaN as NODATA in both formats, a GeoTIFF's read
+    under the traps; NODATA as zero keeping a block's volume; the real
     hillsideKot600m.asc.
 
 \*---------------------------------------------------------------------------*/
 
 #include "terrainRaster.H"
+#include "fpTrapMask.H"
 #include "OSspecific.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
 #include <ogr_srs_api.h>
 #include <cpl_conv.h>
+#include <gdal.h>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -99,26 +105,9 @@ std::string ascText
 }
 
 
-//- Text of an OpenFOAM error thrown by fn, with the file and line of an IO
-//  error ("" when none is thrown)
-template<class Fn>
-std::string ioErrorText(Fn&& fn)
-{
-    try
-    {
-        fn();
-    }
-    catch (const Foam::IOerror& err)
-    {
-        return err.message() + "\nfile: " + err.ioFileName() + " at line "
-            + std::to_string(err.ioStartLineNumber());
-    }
-    catch (const Foam::error& err)
-    {
-        return err.message();
-    }
-    return "";
-}
+//- The header after ncols and the rows of a 3 x 2 raster
+const std::string rows2x3 =
+    "nrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 5 6\n";
 
 
 //- 3 x 2 raster, north row 1 2 3, south row 4 5 6
@@ -417,7 +406,7 @@ TEST(terrainRaster, NoDataFailNamesFileCountAndFirstCell)
         "NODATA_value -9999\n"
         "1 2 3 4\n5 6 -9999.0 8\n9 nan 11 12\n"
     );
-    const std::string msg = ioErrorText([&]{ terrainRaster t(file); });
+    const std::string msg = foamIOErrorText([&]{ terrainRaster t(file); });
     EXPECT_NE(msg.find("file: " + file), std::string::npos) << msg;
     EXPECT_NE(msg.find("has 2 NODATA cells"), std::string::npos) << msg;
     EXPECT_NE(msg.find("row 2, column 3"), std::string::npos) << msg;
@@ -553,7 +542,7 @@ TEST(terrainRaster, MalformedFilesAreRefusedNamingFileAndKey)
     for (const badFile& c : cases)
     {
         const fileName file = writeText(c.name, c.text);
-        const std::string msg = ioErrorText([&]{ terrainRaster t(file); });
+        const std::string msg = foamIOErrorText([&]{ terrainRaster t(file); });
         EXPECT_NE(msg.find(c.expected), std::string::npos)
             << c.name << ":\n" << msg;
         EXPECT_NE(msg.find("file: " + file), std::string::npos)
@@ -561,12 +550,12 @@ TEST(terrainRaster, MalformedFilesAreRefusedNamingFileAndKey)
     }
 
     // The line of the offending key or value
-    const std::string unknown = ioErrorText
+    const std::string unknown = foamIOErrorText
     (
         [&]{ terrainRaster t(testDir()/"unknown.asc"); }
     );
     EXPECT_NE(unknown.find("at line 3"), std::string::npos) << unknown;
-    const std::string word = ioErrorText
+    const std::string word = foamIOErrorText
     (
         [&]{ terrainRaster t(testDir()/"word.asc"); }
     );
@@ -575,10 +564,219 @@ TEST(terrainRaster, MalformedFilesAreRefusedNamingFileAndKey)
         << unknown;
 
     const fileName missing(testDir()/"missing.asc");
-    const std::string msg = ioErrorText([&]{ terrainRaster t(missing); });
+    const std::string msg = foamIOErrorText([&]{ terrainRaster t(missing); });
     EXPECT_NE(msg.find("cannot find the raster file"), std::string::npos)
         << msg;
     EXPECT_NE(msg.find("file: " + missing), std::string::npos) << msg;
+}
+
+
+TEST(terrainRaster, ValuesThatAreNotDecimalNumbersAreRefusedWithTheLine)
+{
+    // strtod read 0x423 as 1059 and 1e400 as inf (a SIGFPE under the
+    // solvers' traps): each is refused with its line, row and column
+    const solverFpTraps traps;
+    const std::string head =
+        "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+        "NODATA_value -9999\n";
+    struct badValue
+    {
+        std::string token, expected;
+    };
+    const std::vector<badValue> cases =
+    {
+        {"0x423", "is not a number"},
+        {"0x1p3", "is not a number"},
+        {"12abc", "is not a number"},
+        {"1.5.2", "is not a number"},
+        {"--1", "is not a number"},
+        {"1e400", "is out of range"},
+        {"-1e400", "is out of range"},
+        {"1e-400", "is out of range"},
+        {"inf", "is out of range"},
+        {"-Infinity", "is out of range"},
+    };
+    for (const badValue& c : cases)
+    {
+        const fileName file =
+            writeText("bad.asc", head + "1 2 3\n4 " + c.token + " 6\n");
+        const std::string msg =
+            foamIOErrorText([&]{ terrainRaster t(file); });
+        EXPECT_NE
+        (
+            msg.find("value '" + c.token + "' (row 2, column 2) "
+              + c.expected),
+            std::string::npos
+        ) << msg;
+        EXPECT_NE(msg.find("file: " + file + " at line 8"), std::string::npos)
+            << msg;
+    }
+
+    // Header values likewise
+    const std::string msg = foamIOErrorText
+    (
+        [&]
+        {
+            terrainRaster t(writeText("badHead.asc", "ncols 0x3\n" + rows2x3));
+        }
+    );
+    EXPECT_NE(msg.find("'ncols' needs one number"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("no hexadecimal"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("at line 1"), std::string::npos) << msg;
+}
+
+
+TEST(terrainRaster, DecimalFormsAndNaNAreRead)
+{
+    // A leading + and the short forms are numbers; nan is NODATA whether
+    // or not the header declares it (GIS exports write NaN for NODATA)
+    const solverFpTraps traps;
+    const std::string head =
+        "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n";
+    const terrainRaster forms
+    (
+        writeText("forms.asc", head + "+5 .5 5.\n-.5e1 1E2 -0\n")
+    );
+    EXPECT_EQ(forms.value(0, 1), 5);
+    EXPECT_EQ(forms.value(1, 1), 0.5);
+    EXPECT_EQ(forms.value(2, 1), 5);
+    EXPECT_EQ(forms.value(0, 0), -5);
+    EXPECT_EQ(forms.value(1, 0), 100);
+    EXPECT_EQ(forms.value(2, 0), 0);
+
+    for (const std::string noData : {"", "NODATA_value nan\n"})
+    {
+        const terrainRaster t
+        (
+            writeText("nan.asc", head + noData + "1 nan 3\n-nan NaN 6\n"),
+            terrainRaster::noDataPolicy::fill
+        );
+        EXPECT_EQ(t.nNoData(), 3) << noData;
+        // Filled from its valid neighbours 1, 3 and 6
+        EXPECT_DOUBLE_EQ(t.value(1, 1), 10.0/3) << noData;
+    }
+}
+
+
+TEST(terrainRaster, ValuesBeyondTheCallersBoundAreRefused)
+{
+    const solverFpTraps traps;
+    const fileName file = writeText
+    (
+        "huge.asc",
+        "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n"
+        "NODATA_value -3.4e38\n1 -3.4e38\n1e300 4\n"
+    );
+
+    // No bound by default: any finite number is a value
+    EXPECT_EQ
+    (
+        terrainRaster(file, terrainRaster::noDataPolicy::fill).maxValue(),
+        1e300
+    );
+
+    // The topography's bound: refused with the line; the NODATA value,
+    // beyond the bound too, is still NODATA
+    const std::string msg = foamIOErrorText
+    (
+        [&]{ terrainRaster t(file, terrainRaster::noDataPolicy::fill, 1e6); }
+    );
+    EXPECT_NE(msg.find("value '1e300' (row 2, column 1) is out of range;"
+        " allowed: a finite number with |value| <= 1000000"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("NODATA_value (-3.4e+38)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("at line 8"), std::string::npos) << msg;
+}
+
+
+TEST(terrainRaster, GeoTiffWithNaNNoDataIsReadUnderTheSolversTraps)
+{
+    // A float32 GeoTIFF with NODATA NaN, as GIS exports write them, and a
+    // NaN cell: a SIGFPE inside GDAL before, with the traps on
+    const solverFpTraps traps;
+    const label nx = 4;
+    const label ny = 3;
+    const fileName file(testDir()/"nanNoData.tif");
+    {
+        // Written through GDAL with the traps masked: the writer is not
+        // under test
+        fpTrapMask masked;
+        GDALAllRegister();
+        GDALDatasetH ds = GDALCreate
+        (
+            GDALGetDriverByName("GTiff"), file.c_str(), nx, ny, 1,
+            GDT_Float32, nullptr
+        );
+        ASSERT_TRUE(ds);
+        double gt[6] = {X0, 2, 0, Y0 + 2*ny, 0, -2};
+        GDALSetGeoTransform(ds, gt);
+        GDALRasterBandH band = GDALGetRasterBand(ds, 1);
+        GDALSetRasterNoDataValue(band, notANumber);
+        // Rows north to south; NaN at row 2, column 3
+        float v[nx*ny] = {1, 2, 3, 4, 5, 6, 0, 8, 9, 10, 11, 12};
+        v[nx + 2] = std::numeric_limits<float>::quiet_NaN();
+        EXPECT_EQ
+        (
+            GDALRasterIO
+            (
+                band, GF_Write, 0, 0, nx, ny, v, nx, ny, GDT_Float32, 0, 0
+            ),
+            CE_None
+        );
+        GDALClose(ds);
+    }
+
+    const std::string msg = foamIOErrorText([&]{ terrainRaster t(file); });
+    EXPECT_NE(msg.find("has 1 NODATA cells"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("row 2, column 3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("file: " + file), std::string::npos) << msg;
+
+    const terrainRaster filled(file, terrainRaster::noDataPolicy::fill);
+    EXPECT_EQ(filled.nNoData(), 1);
+    // The average of its 8 neighbours 2 3 4 6 8 10 11 12
+    EXPECT_EQ(filled.value(2, 1), 7);
+
+    const terrainRaster zero(file, terrainRaster::noDataPolicy::zero);
+    EXPECT_EQ(zero.value(2, 1), 0);
+    EXPECT_EQ(zero.minValue(), 0);
+    EXPECT_EQ(zero.value(3, 1), 8);
+}
+
+
+TEST(terrainRaster, NoDataReadAsZeroKeepsTheBlockVolume)
+{
+    // A release drawn as a 2 m block in NODATA: sum(h) dx dy, and the
+    // bilinear interpolant integrates to it (midpoint sums on a lattice
+    // whose cells lie between the samples are exact)
+    const solverFpTraps traps;
+    const fileName file = writeText
+    (
+        "block.asc",
+        ascText
+        (
+            {
+                {"ncols", "8"}, {"nrows", "6"}, {"xllcorner", "0"},
+                {"yllcorner", "0"}, {"cellsize", "1"}, {"NODATA_value", "-9999"}
+            },
+            8, 6,
+            [](int i, int j)
+            {
+                return (i >= 2 && i < 5 && j >= 1 && j < 4) ? 2.0 : -9999.0;
+            }
+        )
+    );
+    const terrainRaster t(file, terrainRaster::noDataPolicy::zero);
+    EXPECT_EQ(t.nNoData(), 48 - 9);
+    double volume = 0;
+    const label n = 4;
+    for (label j = 0; j < 6*n; ++j)
+    {
+        for (label i = 0; i < 8*n; ++i)
+        {
+            volume += t.Z((i + 0.5)/n, (j + 0.5)/n)/(n*n);
+        }
+    }
+    EXPECT_EQ(volume, 2.0*9);
 }
 
 

@@ -147,6 +147,8 @@ Foam::barrierModel::barrierModel
 
 void Foam::barrierModel::findContactNodes(const gridGeometry& g)
 {
+    checkGrid(g);
+
     // Nodes to a depth of three cells: the stencils of particles that touch
     // the surface, and of those that have entered it by up to a cell
     const scalar h = max(max(g.dx[0], g.dx[1]), g.dx[2]);

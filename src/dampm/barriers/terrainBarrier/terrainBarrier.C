@@ -10,6 +10,8 @@ License
 
 #include "terrainBarrier.H"
 #include "addToRunTimeSelectionTable.H"
+#include "IOmanip.H"
+#include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -115,6 +117,43 @@ void Foam::barrierModels::terrainBarrier::deeperThan
             const scalar Z0 = surface(x, y, Zx, Zy);
             in[i] = (points[i].z() - Z0)/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
         }
+    }
+}
+
+
+void Foam::barrierModels::terrainBarrier::checkGrid
+(
+    const gridGeometry& g
+) const
+{
+    std::vector<double> Znodes(size_t(g.nodeStride[1])*g.nNodesDir[1]);
+    topography_->sampleNodes(g, Znodes.data());
+
+    label lowest, highest;
+    topographyModel::meshRange(g, Znodes.data(), lowest, highest);
+    const scalar zLo = g.origin[2];
+    const scalar zHi = g.upper(2);
+    const bool below = Znodes[highest] < zLo;
+    if (below || Znodes[lowest] > zHi)
+    {
+        FatalIOErrorInFunction(dict_)
+            << setprecision(12)
+            << "the terrain of barrier " << name_ << " (topography "
+            << topography_->description().c_str() << ") lies wholly "
+            << (below ? "below" : "above") << " the mesh: Z from "
+            << Znodes[lowest] << " to " << Znodes[highest] << " m over the"
+            << " mesh's nodes, the mesh's z-range " << zLo << " to " << zHi
+            << " m (the vertices of system/blockMeshDict). "
+            << (
+                   below
+                 ? "The material would rest on the mesh's bottom and never"
+                   " touch the terrain."
+                 : "The whole mesh would be underground."
+               )
+            << " Allowed: a terrain that enters the mesh's z-range, Z >= "
+            << zLo << " m at some node of the mesh and Z <= " << zHi
+            << " m at some node"
+            << exit(FatalIOError);
     }
 }
 

@@ -129,33 +129,9 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
     const label n = nPerCell_;
     const scalar cellArea = g.dx[0]*g.dx[1]/(n*n);
 
+    // Checked by the release, which logs what it puts in and leaves out
     std::vector<double> x, y, h;
-    for (label j = 0; j < g.nCells[1]*n; ++j)
-    {
-        const scalar yp = g.origin[1] + (j + 0.5)*g.dx[1]/n;
-        for (label i = 0; i < g.nCells[0]*n; ++i)
-        {
-            const scalar xp = g.origin[0] + (i + 0.5)*g.dx[0]/n;
-            const scalar hp = release.height(xp, yp);
-            if (!std::isfinite(hp))
-            {
-                FatalErrorInFunction
-                    << "release thickness at (" << xp << ' ' << yp << ") is "
-                    << hp << "; allowed: finite >= 0" << exit(FatalError);
-            }
-            if (hp > 0)
-            {
-                x.push_back(xp);
-                y.push_back(yp);
-                h.push_back(hp);
-            }
-        }
-    }
-    if (x.empty())
-    {
-        FatalErrorInFunction
-            << "the release puts no mass inside the domain" << exit(FatalError);
-    }
+    release.sampleColumns(g, n, rho_, x, y, h);
     particleMemory::reserve
     (
         particles_, x.size(), "the release (constant/dampmProperties)", g, n

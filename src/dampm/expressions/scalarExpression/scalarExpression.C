@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "scalarExpression.H"
+#include "fpTrapMask.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 #include <algorithm>
@@ -483,6 +484,9 @@ std::string Foam::scalarExpression::compile()
     code_.clear();
     try
     {
+        // Folding constants may give NaN or inf (1/0, 1e300*1e300): a value
+        // like any other, refused by the caller where it is evaluated
+        fpTrapMask masked;
         parser(expr_, variables_, code_).parse();
         return "";
     }

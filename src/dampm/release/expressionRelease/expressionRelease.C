@@ -11,6 +11,7 @@ License
 #include "expressionRelease.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -48,8 +49,11 @@ Foam::scalar Foam::releaseModels::expressionRelease::height
     const scalar y
 ) const
 {
+    // Negative is no release; NaN and inf are passed on to be refused, not
+    // clamped (max(NaN, 0) would be 0)
     const scalar vars[3] = {x, y, topography_.Z(x, y)};
-    return max(height_.value(vars), scalar(0));
+    const scalar h = height_.value(vars);
+    return std::isfinite(h) ? max(h, scalar(0)) : h;
 }
 
 

@@ -11,6 +11,7 @@ License
 #include "polygonRelease.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -119,7 +120,24 @@ Foam::scalar Foam::releaseModels::polygonRelease::height
     {
         return 0;
     }
-    return toLevel_ ? max(value_ - topography_.Z(x, y), scalar(0)) : value_;
+    if (!toLevel_)
+    {
+        return value_;
+    }
+    // A terrain that is not finite here is passed on to be refused
+    const scalar h = value_ - topography_.Z(x, y);
+    return std::isfinite(h) ? max(h, scalar(0)) : h;
+}
+
+
+Foam::boundBox Foam::releaseModels::polygonRelease::bounds() const
+{
+    boundBox bb;
+    for (const vector2D& v : vertices_)
+    {
+        bb.add(point(v.x(), v.y(), 0));
+    }
+    return bb;
 }
 
 

@@ -44,7 +44,8 @@ Foam::releaseModels::rasterRelease::rasterRelease
         new terrainRaster
         (
             file.isAbsolute() ? file : caseDir/file,
-            terrainRaster::noDataPolicy::fill
+            terrainRaster::noDataPolicy::zero,
+            maxHeight
         )
     );
     raster_->setOffset(topography.mapOffset());
@@ -66,13 +67,11 @@ Foam::scalar Foam::releaseModels::rasterRelease::height
     const scalar y
 ) const
 {
-    const boundBox bb(raster_->bounds());
+    const boundBox bb(bounds());
     if
     (
-        x < bb.min().x() - 0.5*raster_->dx()
-     || x > bb.max().x() + 0.5*raster_->dx()
-     || y < bb.min().y() - 0.5*raster_->dy()
-     || y > bb.max().y() + 0.5*raster_->dy()
+        x < bb.min().x() || x > bb.max().x()
+     || y < bb.min().y() || y > bb.max().y()
     )
     {
         return 0;
@@ -81,10 +80,25 @@ Foam::scalar Foam::releaseModels::rasterRelease::height
 }
 
 
+Foam::boundBox Foam::releaseModels::rasterRelease::bounds() const
+{
+    const terrainRaster& r = *raster_;
+    return boundBox
+    (
+        point(r.x(0) - r.dx()/2, r.y(0) - r.dy()/2, 0),
+        point(r.x(r.nx() - 1) + r.dx()/2, r.y(r.ny() - 1) + r.dy()/2, 0)
+    );
+}
+
+
 void Foam::releaseModels::rasterRelease::describe(Ostream& os) const
 {
+    const boundBox bb(bounds());
     os  << "raster (" << raster_->nx() << " x " << raster_->ny()
-        << " samples of " << raster_->dx() << " m, U = " << U_ << ')';
+        << " samples of " << raster_->dx() << " m over x " << bb.min().x()
+        << " to " << bb.max().x() << ", y " << bb.min().y() << " to "
+        << bb.max().y() << " m; NODATA and outside: zero thickness, U = "
+        << U_ << ')';
 }
 
 

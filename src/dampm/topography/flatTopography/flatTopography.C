@@ -11,6 +11,8 @@ License
 #include "flatTopography.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
+#include "IOmanip.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -36,6 +38,13 @@ Foam::topographyModels::flatTopography::flatTopography
     Z0_(coeffs.getOrDefault<scalar>("Z0", 0))
 {
     knownKeywords::add(coeffs, {"Z0"});
+    if (!(std::abs(Z0_) <= maxAbsZ))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << setprecision(12)
+            << "Z0 = " << Z0_ << " is invalid; allowed: |Z0| <= " << maxAbsZ
+            << " m" << exit(FatalIOError);
+    }
 }
 
 

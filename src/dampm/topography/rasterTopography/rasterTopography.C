@@ -11,6 +11,8 @@ License
 #include "rasterTopography.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
+#include "IOmanip.H"
+#include <cstdio>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -43,7 +45,8 @@ Foam::topographyModels::rasterTopography::rasterTopography
                 "noData",
                 coeffs,
                 terrainRaster::noDataPolicy::fail
-            )
+            ),
+            maxAbsZ
         )
     )
 {
@@ -64,6 +67,68 @@ Foam::scalar Foam::topographyModels::rasterTopography::Z
 ) const
 {
     return raster_->Z(x, y);
+}
+
+
+void Foam::topographyModels::rasterTopography::checkCovers
+(
+    const gridGeometry& g
+) const
+{
+    // The raster's cells, local coordinates, and how far the mesh reaches
+    // beyond them on each side (west, east, south, north)
+    const terrainRaster& r = *raster_;
+    const scalar lo[2] = {r.x(0) - r.dx()/2, r.y(0) - r.dy()/2};
+    const scalar hi[2] =
+    {
+        r.x(r.nx() - 1) + r.dx()/2, r.y(r.ny() - 1) + r.dy()/2
+    };
+    const scalar beyond[4] =
+    {
+        lo[0] - g.origin[0], g.upper(0) - hi[0],
+        lo[1] - g.origin[1], g.upper(1) - hi[1]
+    };
+    const scalar cell[4] = {r.dx(), r.dx(), r.dy(), r.dy()};
+    const char* const sides[4] = {"west", "east", "south", "north"};
+
+    // Half a raster cell past its cells: the edge samples' own reach (the
+    // rounding of map coordinates in an export often leaves a sliver)
+    scalar worst = 0;
+    string where;
+    for (int s = 0; s < 4; ++s)
+    {
+        if (beyond[s] > 1e-9*cell[s])
+        {
+            worst = max(worst, beyond[s]/cell[s]);
+            where += (where.empty() ? "" : ", ") + string(sides[s]) + ' '
+                + Foam::name(beyond[s]) + " m";
+        }
+    }
+    if (worst > 0.5)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << setprecision(12)
+            << "the raster " << r.file() << " does not cover the mesh: its"
+            << " cells span x " << lo[0] << " to " << hi[0] << ", y " << lo[1]
+            << " to " << hi[1] << " m (local coordinates: map coordinates"
+            << " minus the offset " << r.offset() << "), the mesh"
+            << " (system/blockMeshDict) x " << g.origin[0] << " to "
+            << g.upper(0) << ", y " << g.origin[1] << " to " << g.upper(1)
+            << " m, beyond the raster by " << where.c_str() << "; allowed: a"
+            << " mesh within the raster's cells, give or take half a raster"
+            << " cell (" << r.dx()/2 << " x " << r.dy()/2 << " m). Check the"
+            << " keyword offset and the vertices of system/blockMeshDict"
+            << exit(FatalIOError);
+    }
+    if (worst > 0)
+    {
+        char cells[16];
+        std::snprintf(cells, sizeof(cells), "%.2g", worst);
+        Info<< "rasterTopography: the mesh reaches beyond the cells of the"
+            << " raster " << r.file() << " by " << where.c_str() << " (at"
+            << " most " << cells << " raster cells); Z there continues the"
+            << " edge samples" << endl;
+    }
 }
 
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "terrainRaster.H"
+#include "fpTrapMask.H"
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -19,6 +20,7 @@ License
 #include <charconv>
 #include <cstdint>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <type_traits>
@@ -33,6 +35,10 @@ Foam::terrainRaster::noDataPolicyNames
     { noDataPolicy::fail, "fail" },
     { noDataPolicy::fill, "fill" },
 });
+
+
+const Foam::scalar Foam::terrainRaster::noBound =
+    std::numeric_limits<scalar>::max();
 
 
 namespace
@@ -88,8 +94,18 @@ bool nextWord
 }
 
 
-//- Parse line[b, e) as a whole number (nan and inf included)
-bool parseNumber
+//- What parseNumber found
+enum class parsed
+{
+    number,             // a decimal number (nan and inf included)
+    notANumber,         // hex, trailing characters, a word
+    outOfRange          // beyond a double (1e400, 1e-400)
+};
+
+
+//- Parse line[b, e) as a whole decimal number, as std::from_chars reads
+//  it (no hex, unlike strtod) with an optional leading '+'
+parsed parseNumber
 (
     const std::string& line,
     const std::string::size_type b,
@@ -97,9 +113,29 @@ bool parseNumber
     double& v
 )
 {
-    char* stop = nullptr;
-    v = std::strtod(line.c_str() + b, &stop);
-    return stop == line.c_str() + e;
+    const char* first = line.c_str() + b;
+    const char* const last = line.c_str() + e;
+    if (last - first > 1 && *first == '+' && first[1] != '-')
+    {
+        ++first;
+    }
+    const auto r = std::from_chars(first, last, v);
+    if (r.ptr != last)
+    {
+        return parsed::notANumber;
+    }
+    return
+        r.ec == std::errc() ? parsed::number
+      : r.ec == std::errc::result_out_of_range ? parsed::outOfRange
+      : parsed::notANumber;
+}
+
+
+//- Does the word start like a number (digit, sign or point)?
+bool numberLike(const std::string& line, const std::string::size_type b)
+{
+    const char c = line[b];
+    return std::isdigit(uint8_t(c)) || c == '+' || c == '-' || c == '.';
 }
 
 
@@ -180,7 +216,8 @@ void Foam::terrainRaster::readAsc()
     }
     std::istream& in = is.stdStream();
 
-    // Header: key-value lines up to the first line that starts with a number
+    // Header: key-value lines up to the first line that starts with a value
+    // (a word like a number, or nan or inf)
     double header[nAscKeys] = {};
     label keyLine[nAscKeys] = {};
     std::string line;
@@ -201,17 +238,23 @@ void Foam::terrainRaster::readAsc()
         {
             continue;
         }
-        if (parseNumber(line, b, e, v))
-        {
-            pending = true;
-            break;
-        }
-
         const std::string key(line, b, e - b);
         int k = 0;
         while (k < nAscKeys && !sameKey(key, ascKeyNames[k]))
         {
             ++k;
+        }
+        if
+        (
+            k == nAscKeys
+         && (
+                numberLike(line, b)
+             || parseNumber(line, b, e, v) == parsed::number
+            )
+        )
+        {
+            pending = true;
+            break;
         }
         if (k == nAscKeys)
         {
@@ -246,13 +289,14 @@ void Foam::terrainRaster::readAsc()
         if
         (
             !nextWord(line, pos, b, e)
-         || !parseNumber(line, b, e, v)
+         || parseNumber(line, b, e, v) != parsed::number
          || nextWord(line, pos, b, e)
         )
         {
             FatalIOErrorInFunction(is)
                 << "header key '" << ascKeyNames[k] << "' needs one number: '"
-                << line.c_str() << "'; " << ascHeader
+                << line.c_str() << "' (decimal, no hexadecimal, within the"
+                << " range of a double); " << ascHeader
                 << exit(FatalIOError);
         }
         header[k] = v;
@@ -353,13 +397,15 @@ void Foam::terrainRaster::readAsc()
         while (nextWord(line, pos, b, e))
         {
             double v;
-            if (!parseNumber(line, b, e, v))
+            const parsed kind = parseNumber(line, b, e, v);
+            if (kind == parsed::notANumber)
             {
                 FatalIOErrorInFunction(is)
                     << "value '" << line.substr(b, e - b).c_str() << "' (row "
                     << count/nx_ + 1 << ", column " << count % nx_ + 1
                     << ") is not a number; expected ncols x nrows = "
-                    << nx_ << " x " << ny_ << " numbers after the header"
+                    << nx_ << " x " << ny_ << " decimal numbers after the"
+                    << " header (no hexadecimal, nothing appended)"
                     << exit(FatalIOError);
             }
             if (count == n)
@@ -370,9 +416,27 @@ void Foam::terrainRaster::readAsc()
                     << " x " << ny_ << " = " << n << " values"
                     << exit(FatalIOError);
             }
-            if (!std::isfinite(v) || (hasNoData && v == noData))
+            const bool isNoData =
+                hasNoData
+             && (v == noData || (std::isnan(v) && std::isnan(noData)));
+            if (std::isnan(v) || isNoData)
             {
                 v = std::numeric_limits<double>::quiet_NaN();
+            }
+            else if
+            (
+                kind == parsed::outOfRange
+             || !(std::abs(v) <= maxMagnitude_)
+            )
+            {
+                FatalIOErrorInFunction(is)
+                    << "value '" << line.substr(b, e - b).c_str() << "' (row "
+                    << count/nx_ + 1 << ", column " << count % nx_ + 1
+                    << ") is out of range; allowed: a finite number"
+                    << boundText().c_str() << ", and for missing data nan or"
+                    << " the header's NODATA_value"
+                    << (hasNoData ? " (" + exactText(noData) + ")" : "").c_str()
+                    << exit(FatalIOError);
             }
             const label r = count/nx_;
             values_[count - r*nx_ + nx_*(ny_ - 1 - r)] = v;
@@ -465,16 +529,45 @@ void Foam::terrainRaster::readGeoTiff()
                 << exit(FatalIOError);
         }
     }
-    if (hasNoData)
+
+    // NaN is NODATA whether or not declared (GIS exports mark missing data
+    // with it); inf and values beyond the bound are refused by their cell
+    for (label k = 0; k < values_.size(); ++k)
     {
-        for (scalar& v : values_)
+        scalar& v = values_[k];
+        if (std::isnan(v) || (hasNoData && v == noData))
         {
-            if (v == noData)
-            {
-                v = std::numeric_limits<double>::quiet_NaN();
-            }
+            v = std::numeric_limits<double>::quiet_NaN();
+        }
+        else if (!(std::abs(v) <= maxMagnitude_))
+        {
+            const label i = k % nx_;
+            const label j = k/nx_;
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
+                << "the value " << exactText(v).c_str() << " of the GeoTIFF "
+                << file_ << " at row " << (northUp ? ny_ - j : j + 1)
+                << ", column "
+                << i + 1 << " (row 1 = first in the file), map coordinates ("
+                << exactText(mapOrigin_.x() + i*dx_).c_str() << ' '
+                << exactText(mapOrigin_.y() + j*dy_).c_str() << ") is out of"
+                << " range; allowed: a finite number" << boundText().c_str()
+                << ", and for missing data NaN or the band's NODATA value"
+                << (hasNoData ? " (" + exactText(noData) + ")" : "").c_str()
+                << exit(FatalIOError);
         }
     }
+}
+
+
+std::string Foam::terrainRaster::boundText() const
+{
+    if (maxMagnitude_ == noBound)
+    {
+        return "";
+    }
+    char text[48];
+    std::snprintf(text, sizeof(text), " with |value| <= %.12g", maxMagnitude_);
+    return text;
 }
 
 
@@ -520,6 +613,19 @@ void Foam::terrainRaster::applyNoDataPolicy(const noDataPolicy policy)
     }
     if (nNoData_ == 0)
     {
+        return;
+    }
+
+    if (policy == noDataPolicy::zero)
+    {
+        for (scalar& v : values_)
+        {
+            v = std::isfinite(v) ? v : 0;
+        }
+        minValue_ = min(minValue_, scalar(0));
+        maxValue_ = max(maxValue_, scalar(0));
+        Info<< "terrainRaster: read " << nNoData_ << " NODATA cells of "
+            << file_ << " as 0" << endl;
         return;
     }
 
@@ -613,7 +719,8 @@ void Foam::terrainRaster::fillNoData()
 Foam::terrainRaster::terrainRaster
 (
     const fileName& file,
-    const noDataPolicy policy
+    const noDataPolicy policy,
+    const scalar maxMagnitude
 )
 :
     file_(file),
@@ -631,7 +738,8 @@ Foam::terrainRaster::terrainRaster
     nNoData_(0),
     projection_(),
     minValue_(0),
-    maxValue_(0)
+    maxValue_(0),
+    maxMagnitude_(maxMagnitude)
 {
     file_.expand();
     if (!isFile(file_))
@@ -648,15 +756,7 @@ Foam::terrainRaster::terrainRaster
         ext.begin(), ext.end(), ext.begin(),
         [](unsigned char c) { return std::tolower(c); }
     );
-    if (ext == "asc")
-    {
-        readAsc();
-    }
-    else if (ext == "tif" || ext == "tiff")
-    {
-        readGeoTiff();
-    }
-    else
+    if (ext != "asc" && ext != "tif" && ext != "tiff")
     {
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
             << "unknown raster file extension '." << file_.ext() << "' of "
@@ -665,8 +765,21 @@ Foam::terrainRaster::terrainRaster
             << exit(FatalIOError);
     }
 
-    setGeometry();
-    applyNoDataPolicy(policy);
+    // Read with the traps masked: a NaN, an inf or an overflow in the file
+    // is a value to refuse (or NODATA), not a SIGFPE inside GDAL or here
+    {
+        fpTrapMask masked;
+        if (ext == "asc")
+        {
+            readAsc();
+        }
+        else
+        {
+            readGeoTiff();
+        }
+        setGeometry();
+        applyNoDataPolicy(policy);
+    }
 }
 
 
@@ -697,7 +810,8 @@ Foam::terrainRaster::terrainRaster
     nNoData_(0),
     projection_(projection),
     minValue_(0),
-    maxValue_(0)
+    maxValue_(0),
+    maxMagnitude_(noBound)
 {
     if
     (
@@ -797,6 +911,7 @@ void Foam::terrainRaster::writeGeoTiff
     const sampleType type
 ) const
 {
+    fpTrapMask masked;
     registerGdal();
     mkDir(file.path());
     GDALDriverH driver = GDALGetDriverByName("GTiff");

@@ -10,6 +10,10 @@ License
 
 #include "topographyModel.H"
 #include "knownKeywords.H"
+#include "fpTrapMask.H"
+#include "OStringStream.H"
+#include "IOmanip.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -29,7 +33,8 @@ Foam::topographyModel::topographyModel
 )
 :
     coeffs_(coeffs),
-    caseDir_(caseDir)
+    caseDir_(caseDir),
+    byDefault_(false)
 {}
 
 
@@ -41,16 +46,113 @@ void Foam::topographyModel::sampleNodes
     double* Znodes
 ) const
 {
-    for (label j = 0; j < g.nNodesDir[1]; ++j)
+    checkCovers(g);
+
+    // Traps masked for the whole loop, not per node: what is not finite
+    // (or too large to compute with) is found here and refused by its node
+    const gridGeometry::index nG = gridGeometry::nGhost;
+    label bad = -1;
     {
-        for (label i = 0; i < g.nNodesDir[0]; ++i)
+        fpTrapMask masked;
+        for (label j = 0; j < g.nNodesDir[1]; ++j)
         {
-            const label ig = i - gridGeometry::nGhost;
-            const label jg = j - gridGeometry::nGhost;
-            Znodes[i + j*g.nodeStride[1]] =
-                Z(g.nodeCoord(0, ig), g.nodeCoord(1, jg));
+            for (label i = 0; i < g.nNodesDir[0]; ++i)
+            {
+                const label nodei = i + j*g.nodeStride[1];
+                const scalar z =
+                    Z(g.nodeCoord(0, i - nG), g.nodeCoord(1, j - nG));
+                Znodes[nodei] = z;
+                if (bad < 0 && !(std::isfinite(z) && std::abs(z) <= maxAbsZ))
+                {
+                    bad = nodei;
+                }
+            }
         }
     }
+
+    const auto at = [&](const label nodei)
+    {
+        const label i = nodei % g.nodeStride[1] - nG;
+        const label j = nodei/g.nodeStride[1] - nG;
+        const bool ghost =
+            i < 0 || j < 0 || i > g.nCells[0] || j > g.nCells[1];
+        return
+            "(x y) = (" + Foam::name(g.nodeCoord(0, i)) + ' '
+          + Foam::name(g.nodeCoord(1, j)) + ')'
+          + (ghost ? " (a ghost node, one cell outside the mesh)" : "");
+    };
+
+    if (bad >= 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << setprecision(12)
+            << "the topography " << description().c_str() << " gives Z = "
+            << Znodes[bad] << " m at the grid node " << at(bad).c_str()
+            << "; allowed: a finite Z with |Z| <= " << maxAbsZ << " m at"
+            << " every node of the grid, the ghost nodes one cell outside the"
+            << " mesh included"
+            << exit(FatalIOError);
+    }
+
+    if (g.dim != 2)
+    {
+        return;
+    }
+
+    // The 2D mesh's one cell in z holds the columns' free surfaces: the
+    // bed must lie in it (the rounding of a raster's bilinear sum allowed)
+    label lowest, highest;
+    meshRange(g, Znodes, lowest, highest);
+    const scalar zLo = g.origin[2];
+    const scalar zHi = g.upper(2);
+    const scalar tol = 1e-12*max(max(mag(zLo), mag(zHi)), scalar(1));
+    if (Znodes[lowest] < zLo - tol || Znodes[highest] > zHi + tol)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << setprecision(12)
+            << "the terrain, topography " << description().c_str()
+            << (byDefault_ ? " (the default: no keyword topography)" : "")
+            << ", ranges from Z = " << Znodes[lowest] << " m at "
+            << at(lowest).c_str() << " to Z = " << Znodes[highest]
+            << " m at " << at(highest).c_str() << " over the mesh's nodes,"
+            << " outside the mesh's z-range " << zLo << " to " << zHi
+            << " m (the vertices of system/blockMeshDict); allowed: " << zLo
+            << " <= Z <= " << zHi << " m at every node of the mesh. The"
+            << " columns are written at their free surface z = Z + h, which"
+            << " must lie in the one-cell-thick mesh: let its z-range reach"
+            << " from the lowest terrain to above the highest free surface"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::topographyModel::meshRange
+(
+    const gridGeometry& g,
+    const double* Znodes,
+    label& lowest,
+    label& highest
+)
+{
+    const gridGeometry::index nG = gridGeometry::nGhost;
+    lowest = highest = nG*(1 + g.nodeStride[1]);
+    for (label j = nG; j <= nG + g.nCells[1]; ++j)
+    {
+        for (label i = nG; i <= nG + g.nCells[0]; ++i)
+        {
+            const label nodei = i + j*g.nodeStride[1];
+            lowest = Znodes[nodei] < Znodes[lowest] ? nodei : lowest;
+            highest = Znodes[nodei] > Znodes[highest] ? nodei : highest;
+        }
+    }
+}
+
+
+Foam::string Foam::topographyModel::description() const
+{
+    OStringStream os;
+    describe(os);
+    return os.str();
 }
 
 

@@ -27,11 +27,13 @@ Foam::autoPtr<Foam::topographyModel> Foam::topographyModel::New
         dict, "topography", dictionaryConstructorTablePtr_->sortedToc()
     );
 
-    return autoPtr<topographyModel>
+    autoPtr<topographyModel> model
     (
         modelConstructor<topographyModel>(dict, "topography", modelType)
         (dict.optionalSubDict(modelType + "Coeffs"), caseDir)
     );
+    model->byDefault_ = !dict.found("topography");
+    return model;
 }
 
 
