@@ -32,6 +32,7 @@ Description
 #include "fvCFD.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "particleCloudIO.H"
 #include "hazardMaps.H"

@@ -35,6 +35,7 @@ Description
 #include "fvCFD.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "mpm3dFlow.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"

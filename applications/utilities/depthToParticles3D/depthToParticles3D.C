@@ -43,6 +43,7 @@ Description
 
 #include "fvCFD.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "mpm3dFlow.H"
 #include "terrainBarrier.H"

@@ -10,6 +10,7 @@ License
 
 #include "runOutCase.H"
 #include "OSspecific.H"
+#include "strictIOdictionary.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -64,7 +65,7 @@ void Foam::runOutCase::setTime(const instant& t, const label index)
     );
     properties_.reset
     (
-        new IOdictionary
+        new strictIOdictionary
         (
             IOobject
             (
