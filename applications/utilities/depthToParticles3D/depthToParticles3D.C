@@ -23,7 +23,8 @@ Description
 
     - reads the columns at the source time (default: the latest), the
       3D case's mesh, material, barriers and ground;
-    - refuses, with the reason, cases whose gravity, material or terrain
+    - refuses, with the reason, an option's value that is not allowed
+      (before reading anything), cases whose gravity, material or terrain
       disagree, a missing case or time, no column inside the 3D mesh, and
       particles that would start inside a barrier;
     - converts the columns whose footprint lies inside the 3D mesh
@@ -52,6 +53,7 @@ Description
 #include "timeSeriesFile.H"
 #include "runOutMaps.H"
 #include "runOutCase.H"
+#include "fpTrapsHeld.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -92,6 +94,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    #include "readOptions.H"
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -99,21 +102,6 @@ int main(int argc, char *argv[])
     #include "create3DCase.H"
     #include "checkCases.H"
 
-    const word profile = args.getOrDefault<word>("profile", "uniform");
-    if (!columnsTo3D::profileNames.found(profile))
-    {
-        FatalErrorInFunction
-            << "-profile " << profile << " is invalid; allowed: "
-            << columnsTo3D::profileNames.sortedToc() << exit(FatalError);
-    }
-    const word vertical =
-        args.getOrDefault<word>("verticalVelocity", "continuity");
-    if (!columnsTo3D::verticalNames.found(vertical))
-    {
-        FatalErrorInFunction
-            << "-verticalVelocity " << vertical << " is invalid; allowed: "
-            << columnsTo3D::verticalNames.sortedToc() << exit(FatalError);
-    }
     columnsTo3D conversion
     (
         mesh.bounds(),
