@@ -33,17 +33,9 @@ Foam::barrierModels::planeBarrier::planeBarrier
 )
 :
     barrierModel(name, dict, caseDir),
-    origin_(dict.get<point>("point")),
-    normal_(dict.get<vector>("normal"))
-{
-    if (!(mag(normal_) > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "normal = " << normal_ << " is invalid; allowed: a non-zero"
-            << " vector" << exit(FatalIOError);
-    }
-    normal_ /= mag(normal_);
-}
+    origin_(readPoint("point")),
+    normal_(readDirection("normal"))
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
