@@ -127,17 +127,21 @@ Foam::barrierModel::barrierModel
 }
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::point Foam::barrierModel::readPoint(const word& key) const
+Foam::point Foam::barrierModel::readPoint
+(
+    const dictionary& dict,
+    const word& key
+)
 {
-    const point p = dict_.get<point>(key);
+    const point p = dict.get<point>(key);
     for (direction d = 0; d < 3; ++d)
     {
         // Finite first: a comparison with NaN would raise a signal
         if (!(std::isfinite(p[d]) && mag(p[d]) <= STLcheck::maxCoordinate))
         {
-            FatalIOErrorInFunction(dict_)
+            FatalIOErrorInFunction(dict)
                 << key << " = " << p << " is invalid; allowed: coordinates"
                 << " within " << STLcheck::maxCoordinate << " m of the origin"
                 << exit(FatalIOError);
@@ -146,6 +150,8 @@ Foam::point Foam::barrierModel::readPoint(const word& key) const
     return p;
 }
 
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 Foam::vector Foam::barrierModel::readDirection(const word& key) const
 {

@@ -125,7 +125,11 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 << "type " << type << " is invalid; allowed: box"
                 << exit(FatalIOError);
         }
-        const boundBox box(dict.get<point>("min"), dict.get<point>("max"));
+        const boundBox box
+        (
+            barrierModel::readPoint(dict, "min"),
+            barrierModel::readPoint(dict, "max")
+        );
         const vector U = dict.getOrDefault<vector>("U", Zero);
         scalar speed = 0;
         {
