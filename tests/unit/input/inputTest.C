@@ -88,7 +88,10 @@ TEST(fpTrapsHeld, ReadFiniteRefusesNonFiniteTextWithoutSignal)
 TEST(strictIOdictionary, DuplicateKeywordRefusedWithLine)
 {
     dictionary d;
-    const std::string twice(readError("a 1;\nb\n{\n    c 2;\n    c 3;\n}\n", d));
+    const std::string twice
+    (
+        readError("a 1;\nb\n{\n    c 2;\n    c 3;\n}\n", d)
+    );
     EXPECT_NE(twice.find("duplicate keyword \"c\""), std::string::npos)
         << twice;
     EXPECT_NE(twice.find("allowed: distinct names"), std::string::npos);

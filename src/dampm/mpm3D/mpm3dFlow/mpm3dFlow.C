@@ -290,9 +290,13 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         }
 
         // What was kept, and what of the box lies outside the mesh
+        bool beyond = false;
         scalar inside = 1;
         for (direction d = 0; d < 3; ++d)
         {
+            beyond =
+                beyond
+             || box.min()[d] < mesh.min()[d] || box.max()[d] > mesh.max()[d];
             inside *= max
             (
                 min(box.max()[d], mesh.max()[d])
@@ -300,7 +304,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 0.0
             );
         }
-        const scalar outside = max(box.volume() - inside, 0.0);
+        const scalar outside = beyond ? box.volume() - inside : 0;
         Info<< "Initial region " << e.keyword() << ": " << pts.size()
             << " particles" << (hydrostatic ? ", hydrostatic" : "")
             << ", kept " << mass << " kg";
