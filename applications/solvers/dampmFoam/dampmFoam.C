@@ -35,6 +35,7 @@ Description
 #include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "particleCloudIO.H"
 #include "hazardMaps.H"

@@ -37,6 +37,7 @@ Description
 #include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "mpm3dFlow.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"

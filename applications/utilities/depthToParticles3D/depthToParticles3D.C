@@ -23,7 +23,8 @@ Description
 
     - reads the columns at the source time (default: the latest), the
       3D case's mesh, material, barriers and ground;
-    - refuses, with the reason, cases whose gravity, material or terrain
+    - refuses, with the reason, an option's value that is not allowed
+      (before reading anything), cases whose gravity, material or terrain
       disagree, a missing case or time, no column inside the 3D mesh, and
       particles that would start inside a barrier;
     - converts the columns whose footprint lies inside the 3D mesh
@@ -44,6 +45,7 @@ Description
 #include "fvCFD.H"
 #include "mpmTime.H"
 #include "mpmGrid.H"
+#include "strictIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "mpm3dFlow.H"
 #include "terrainBarrier.H"
@@ -54,6 +56,7 @@ Description
 #include "runOutCase.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"
+#include "fpTrapsHeld.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -94,6 +97,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    #include "readOptions.H"
 
     // The 3D case's time: it writes the start of the 3D run as a complete
     // time directory, whatever that time held before
@@ -107,21 +111,6 @@ int main(int argc, char *argv[])
     #include "create3DCase.H"
     #include "checkCases.H"
 
-    const word profile = args.getOrDefault<word>("profile", "uniform");
-    if (!columnsTo3D::profileNames.found(profile))
-    {
-        FatalErrorInFunction
-            << "-profile " << profile << " is invalid; allowed: "
-            << columnsTo3D::profileNames.sortedToc() << exit(FatalError);
-    }
-    const word vertical =
-        args.getOrDefault<word>("verticalVelocity", "continuity");
-    if (!columnsTo3D::verticalNames.found(vertical))
-    {
-        FatalErrorInFunction
-            << "-verticalVelocity " << vertical << " is invalid; allowed: "
-            << columnsTo3D::verticalNames.sortedToc() << exit(FatalError);
-    }
     columnsTo3D conversion
     (
         mesh.bounds(),

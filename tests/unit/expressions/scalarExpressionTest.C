@@ -17,7 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "scalarExpression.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
 #include "testCase.H"
@@ -340,7 +340,7 @@ TEST(scalarExpression, ConstantsFoldUnderTheSolversTrapsToNaNAndInf)
     const scalarExpression overflow("1e300*1e300 - x", {"x"}, "test");
     const scalarExpression nan("x*sqrt(-1)", {"x"}, "test");
     const double x = 2;
-    fpTrapMask masked;
+    fpTrapsHeld masked;
     EXPECT_TRUE(std::isinf(inf.value(&x)));
     EXPECT_TRUE(std::isinf(overflow.value(&x)));
     EXPECT_TRUE(std::isnan(nan.value(&x)));

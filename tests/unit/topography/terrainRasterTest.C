@@ -21,7 +21,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "terrainRaster.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "OSspecific.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
@@ -700,7 +700,7 @@ TEST(terrainRaster, GeoTiffWithNaNNoDataIsReadUnderTheSolversTraps)
     {
         // Written through GDAL with the traps masked: the writer is not
         // under test
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         GDALAllRegister();
         GDALDatasetH ds = GDALCreate
         (

@@ -12,6 +12,7 @@ License
 #include "knownKeywords.H"
 #include "DynamicField.H"
 #include "orderedSums.H"
+#include "STLcheck.H"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -131,15 +132,51 @@ Foam::barrierModel::barrierModel
     }
     if (dict.found("overtoppingDirection"))
     {
-        overtopDir_ = dict.get<vector>("overtoppingDirection");
-        if (!(mag(overtopDir_) > 0))
+        overtopDir_ = readDirection("overtoppingDirection");
+    }
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::point Foam::barrierModel::readPoint
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const point p = dict.get<point>(key);
+    for (direction d = 0; d < 3; ++d)
+    {
+        // Finite first: a comparison with NaN would raise a signal
+        if (!(std::isfinite(p[d]) && mag(p[d]) <= STLcheck::maxCoordinate))
         {
             FatalIOErrorInFunction(dict)
-                << "overtoppingDirection = " << overtopDir_ << " is invalid;"
-                << " allowed: a non-zero vector" << exit(FatalIOError);
+                << key << " = " << p << " is invalid; allowed: coordinates"
+                << " within " << STLcheck::maxCoordinate << " m of the origin"
+                << exit(FatalIOError);
         }
-        overtopDir_ /= mag(overtopDir_);
     }
+    return p;
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::barrierModel::readDirection(const word& key) const
+{
+    const vector v = dict_.get<vector>(key);
+    const scalar scale = cmptMax(cmptMag(v));
+    if (!(std::isfinite(scale) && scale > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << key << " = " << v << " is invalid; allowed: a non-zero vector"
+            << " with finite components" << exit(FatalIOError);
+    }
+    // Scaled first only where the square of the length would overflow or
+    // underflow: otherwise v/|v| as it always was, bit for bit
+    const vector u = (scale > 1e-150 && scale < 1e150) ? v : v/scale;
+    return u/mag(u);
 }
 
 

@@ -34,7 +34,7 @@ Foam::barrierModels::boxBarrier::boxBarrier
 )
 :
     barrierModel(name, dict, caseDir),
-    box_(dict.get<point>("min"), dict.get<point>("max"))
+    box_(readPoint("min"), readPoint("max"))
 {
     knownKeywords::add(dict, {"min", "max"});
 

@@ -34,18 +34,10 @@ Foam::barrierModels::planeBarrier::planeBarrier
 )
 :
     barrierModel(name, dict, caseDir),
-    origin_(dict.get<point>("point")),
-    normal_(dict.get<vector>("normal"))
+    origin_(readPoint("point")),
+    normal_(readDirection("normal"))
 {
     knownKeywords::add(dict, {"point", "normal"});
-
-    if (!(mag(normal_) > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "normal = " << normal_ << " is invalid; allowed: a non-zero"
-            << " vector" << exit(FatalIOError);
-    }
-    normal_ /= mag(normal_);
 }
 
 

@@ -12,7 +12,8 @@ License
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "OSspecific.H"
-#include <fstream>
+#include "STLcheck.H"
+#include <cstdint>
 #include <cstring>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -39,29 +40,23 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
             << exit(FatalIOError);
     }
 
-    // A binary STL whose size disagrees with its triangle count is taken
-    // for ASCII by OpenFOAM's reader, whose scanner then exits the process:
-    // check it here
-    if (path.hasExt("stl") || path.hasExt("STL"))
+    // An STL file is checked before OpenFOAM's reader sees it (STLcheck):
+    // its scanner exits the process on a binary file whose header starts
+    // with "solid", and a NaN vertex raises a signal when points are merged
+    const word ext = path.ext();
+    const bool stl = (ext == "stl" || ext == "STL");
+    bool binary = false;
+    if (stl)
     {
-        std::ifstream is(path, std::ios::binary);
-        char head[84] = {};
-        is.read(head, 84);
-        const bool ascii = std::string(head, 5) == "solid";
-        if (!ascii)
+        const STLcheck check(path);
+        if (!check.valid())
         {
-            uint32_t n = 0;
-            std::memcpy(&n, head + 80, 4);
-            const off_t expected = 84 + 50*off_t(n);
-            if (!is || fileSize(path) != expected)
-            {
-                FatalIOErrorInFunction(dict_)
-                    << "file " << file_ << ": " << path << " is not a valid"
-                    << " binary STL (" << fileSize(path) << " bytes, "
-                    << expected << " expected for the " << n
-                    << " triangles it declares)" << exit(FatalIOError);
-            }
+            FatalIOErrorInFunction(dict_)
+                << "file " << file_ << ": cannot read a triangulated surface"
+                << " from " << path << ": " << check.error().c_str()
+                << exit(FatalIOError);
         }
+        binary = check.binary();
     }
 
     // The readers stop with their own message on a broken file: catch it
@@ -70,7 +65,12 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
     const bool throwing = FatalError.throwExceptions();
     try
     {
-        surface_.reset(new triSurface(path));
+        surface_.reset
+        (
+            stl
+          ? new triSurface(path, word(binary ? "stlb" : "stl"))
+          : new triSurface(path)
+        );
     }
     catch (const Foam::error& err)
     {
@@ -86,9 +86,33 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
             << why.c_str() << exit(FatalIOError);
     }
 
-    const triSurface& surf = *surface_;
+    // Other formats: the points as read (their bits: a signalling NaN is
+    // not loaded)
+    const pointField& pts = surface_->points();
+    forAll(pts, pointi)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            std::uint64_t bits;
+            std::memcpy(&bits, &pts[pointi][d], 8);
+            if
+            (
+                ((bits >> 52) & 0x7ff) == 0x7ff
+             || std::abs(pts[pointi][d]) > STLcheck::maxCoordinate
+            )
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "file " << file_ << ": point " << pointi << " of "
+                    << path << " has a coordinate that is not finite or"
+                    << " beyond " << STLcheck::maxCoordinate << " m; allowed:"
+                    << " finite coordinates within " << STLcheck::maxCoordinate
+                    << " m of the origin" << exit(FatalIOError);
+            }
+        }
+    }
+
     label nOpen = 0;
-    for (const labelList& ef : surf.edgeFaces())
+    for (const labelList& ef : surface_->edgeFaces())
     {
         nOpen += (ef.size() != 2);
     }
@@ -101,19 +125,124 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
             << exit(FatalIOError);
     }
 
-    // Orientation from the sign of the enclosed volume
-    const pointField& pts = surf.points();
-    scalar volume6 = 0;
-    for (const labelledTri& t : surf)
+    orient(path);
+    outwardNormal_ = surface_->faceNormals();
+    search_.reset(new triSurfaceSearch(*surface_));
+}
+
+
+void Foam::barrierModels::triSurfaceBarrier::orient(const fileName& path)
+{
+    const triSurface& surf = *surface_;
+    const word fix
+    (
+        "reorient it, e.g. with OpenFOAM's surfaceOrient (surfaceOrient "
+      + file_ + " \"(x y z)\" " + file_.lessExt() + "Oriented."
+      + file_.ext() + ", with (x y z) a point outside it), and check it"
+        " with surfaceCheck"
+    );
+
+    // Consistent: the two triangles of each edge run along it in opposite
+    // directions. Else OpenFOAM's inside test, which takes the side of the
+    // nearest triangle, is wrong near the flipped ones
+    const edgeList& edges = surf.edges();
+    const labelListList& edgeFaces = surf.edgeFaces();
+    const List<labelledTri>& faces = surf.localFaces();
+    label nSame = 0;
+    forAll(edges, edgei)
     {
-        volume6 += pts[t[0]] & (pts[t[1]] ^ pts[t[2]]);
+        const labelList& ef = edgeFaces[edgei];
+        nSame +=
+            faces[ef[0]].edgeDirection(edges[edgei])
+         == faces[ef[1]].edgeDirection(edges[edgei]);
     }
-    outwardNormal_ = surf.faceNormals();
-    if (volume6 < 0)
+    if (nSame)
     {
-        outwardNormal_ = -outwardNormal_;
+        FatalIOErrorInFunction(dict_)
+            << "file " << file_ << ": the triangles of " << path << " do not"
+            << " all face the same way: at " << nSame << " of its "
+            << edges.size() << " edges both triangles run the same way (some"
+            << " are flipped), so its inside is undefined; allowed: a closed"
+            << " surface whose triangles all face outwards (or all inwards);"
+            << " " << fix.c_str() << exit(FatalIOError);
     }
-    search_.reset(new triSurfaceSearch(surf));
+
+    // Each connected part: its volume, positive when its triangles face
+    // outwards (the divergence theorem), and its box
+    labelList part;
+    const label nParts = surf.markZones(boolList(edges.size(), false), part);
+    scalarField volume6(nParts, Zero);
+    List<boundBox> box(nParts, boundBox::invertedBox);
+    const pointField& pts = surf.localPoints();
+    forAll(faces, facei)
+    {
+        const labelledTri& f = faces[facei];
+        volume6[part[facei]] += pts[f[0]] & (pts[f[1]] ^ pts[f[2]]);
+        box[part[facei]].add(pts, f);
+    }
+
+    // A part facing inwards is inside out, unless it is a cavity: inside
+    // the box of a part that faces outwards. Inside out, it is flipped:
+    // a closed surface bounds one solid, the barrier the user meant (the
+    // outside of a surface would hold the whole domain)
+    boolList flip(nParts, false);
+    label nFlipped = 0, nCavities = 0;
+    for (label parti = 0; parti < nParts; ++parti)
+    {
+        const scalar span = cmptMax(box[parti].span());
+        if (!(mag(volume6[parti]) > 1e-9*6*span*span*span))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "file " << file_ << ": a part of the surface in " << path
+                << " (within " << box[parti] << ") encloses no volume"
+                << " (" << volume6[parti]/6 << " m^3); allowed: closed"
+                << " surfaces around a solid" << exit(FatalIOError);
+        }
+        if (volume6[parti] > 0)
+        {
+            continue;
+        }
+        bool cavity = false;
+        for (label outer = 0; outer < nParts && !cavity; ++outer)
+        {
+            cavity =
+                volume6[outer] > 0
+             && box[outer].contains(box[parti].min())
+             && box[outer].contains(box[parti].max());
+        }
+        flip[parti] = !cavity;
+        nFlipped += !cavity;
+        nCavities += cavity;
+    }
+    if (nCavities)
+    {
+        Info<< "Barrier " << name_ << ": " << nCavities << " part(s) of "
+            << file_ << " face inwards inside another part: cavities of the"
+            << " barrier" << endl;
+    }
+    if (!nFlipped)
+    {
+        return;
+    }
+
+    List<labelledTri> oriented(surf);
+    label nTriangles = 0;
+    forAll(oriented, facei)
+    {
+        if (flip[part[facei]])
+        {
+            oriented[facei].flip();
+            ++nTriangles;
+        }
+    }
+    WarningInFunction
+        << "barrier " << name_ << ": the surface in " << path << " is inside"
+        << " out (its triangles face inwards: negative volume) in "
+        << nFlipped << " of its " << nParts << " parts; their " << nTriangles
+        << " triangles are flipped to face outwards, so the barrier is the"
+        << " solid the surface bounds. To fix the file, " << fix.c_str()
+        << endl;
+    surface_.reset(new triSurface(oriented, surf.patches(), surf.points()));
 }
 
 

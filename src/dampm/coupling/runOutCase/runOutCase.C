@@ -11,6 +11,7 @@ License
 #include "runOutCase.H"
 #include "OSspecific.H"
 #include "mpmTimeControls.H"
+#include "strictIOdictionary.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -66,7 +67,7 @@ void Foam::runOutCase::setTime(const instant& t, const label index)
     );
     properties_.reset
     (
-        new IOdictionary
+        new strictIOdictionary
         (
             IOobject
             (

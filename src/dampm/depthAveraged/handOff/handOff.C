@@ -12,6 +12,7 @@ License
 #include "knownKeywords.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "strictIOdictionary.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -123,8 +124,10 @@ Foam::handOff::handOff
                 << "regionCase " << other << ": no file " << file
                 << exit(FatalIOError);
         }
+        // As mpm3dFoam reads it: a barrier named twice is refused
         IFstream is(file);
-        const dictionary props(is);
+        dictionary props;
+        strictIOdictionary::read(is, props);
         if (!props.isDict("barriers"))
         {
             FatalIOErrorInFunction(dict)

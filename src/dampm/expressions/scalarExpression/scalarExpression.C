@@ -9,7 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "scalarExpression.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 #include <algorithm>
@@ -486,7 +486,7 @@ std::string Foam::scalarExpression::compile()
     {
         // Folding constants may give NaN or inf (1/0, 1e300*1e300): a value
         // like any other, refused by the caller where it is evaluated
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         parser(expr_, variables_, code_).parse();
         return "";
     }

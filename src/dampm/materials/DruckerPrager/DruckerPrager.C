@@ -24,20 +24,27 @@ namespace materialModels
 }
 
 
+const Foam::materialModel::coeffRange
+Foam::materialModels::DruckerPrager::angleRange
+{
+    0, true, 90, false, "deg"
+};
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::materialModels::DruckerPrager::DruckerPrager(const dictionary& coeffs)
 :
     linearElastic(coeffs),
-    phi_(readCoeff("frictionAngle", false)),
-    psi_(readCoeffOrDefault("dilatancyAngle", 0)),
-    cohesion_(readCoeffOrDefault("cohesion", 0)),
+    phi_(readCoeff("frictionAngle", angleRange)),
+    psi_(readCoeffOrDefault("dilatancyAngle", 0, angleRange)),
+    cohesion_(readCoeffOrDefault("cohesion", 0, stressRange)),
     alpha_(0),
     alphaPsi_(0),
     k_(0),
     plasticStrain_(-1)
 {
-    if (!(phi_ < 90) || !(psi_ <= phi_))
+    if (!(psi_ <= phi_))
     {
         FatalIOErrorInFunction(coeffs)
             << "frictionAngle = " << phi_ << ", dilatancyAngle = " << psi_

@@ -23,23 +23,31 @@ namespace materialModels
 }
 
 
+const Foam::materialModel::coeffRange
+Foam::materialModels::linearElastic::youngsModulusRange
+{
+    0, false, 1e13, true, "Pa"
+};
+
+
+const Foam::materialModel::coeffRange
+Foam::materialModels::linearElastic::poissonRange
+{
+    0, true, 0.5, false, ""
+};
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::materialModels::linearElastic::linearElastic(const dictionary& coeffs)
 :
     materialModel(coeffs, false),
-    E_(readCoeff("E")),
-    nu_(readCoeff("nu", false)),
+    // Both checked before the moduli: nu = 0.5 divides by zero in K
+    E_(readCoeff("E", youngsModulusRange)),
+    nu_(readCoeff("nu", poissonRange)),
     G_(E_/(2*(1 + nu_))),
     K_(E_/(3*(1 - 2*nu_)))
-{
-    if (!(nu_ < 0.5))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "nu = " << nu_ << " is invalid; allowed: 0 <= nu < 0.5"
-            << exit(FatalIOError);
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

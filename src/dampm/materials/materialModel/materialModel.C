@@ -10,6 +10,7 @@ License
 
 #include "materialModel.H"
 #include "knownKeywords.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -20,22 +21,52 @@ namespace Foam
 }
 
 
+const Foam::materialModel::coeffRange Foam::materialModel::densityRange
+{
+    1e-3, true, 1e5, true, "kg/m^3"
+};
+
+const Foam::materialModel::coeffRange Foam::materialModel::stressRange
+{
+    0, true, 1e13, true, "Pa"
+};
+
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+void Foam::materialModel::checkCoeff
+(
+    const word& key,
+    const scalar value,
+    const coeffRange& range
+) const
+{
+    // Finite first: a comparison with NaN would raise a signal
+    const bool ok =
+        std::isfinite(value)
+     && (range.loIncluded ? value >= range.lo : value > range.lo)
+     && (range.hiIncluded ? value <= range.hi : value < range.hi);
+    if (!ok)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << key << " = " << value << " is invalid; allowed: " << range.lo
+            << (range.loIncluded ? " <= " : " < ") << key
+            << (range.hiIncluded ? " <= " : " < ") << range.hi
+            << (*range.unit ? " [" : "") << range.unit
+            << (*range.unit ? "]" : "") << exit(FatalIOError);
+    }
+}
+
 
 Foam::scalar Foam::materialModel::readCoeff
 (
     const word& key,
-    const bool positive
+    const coeffRange& range
 ) const
 {
     knownKeywords::add(coeffs_, {key});
     const scalar value = coeffs_.get<scalar>(key);
-    if (positive ? !(value > 0) : !(value >= 0))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << key << " = " << value << " is invalid; allowed: " << key
-            << (positive ? " > 0" : " >= 0") << exit(FatalIOError);
-    }
+    checkCoeff(key, value, range);
     return value;
 }
 
@@ -43,11 +74,12 @@ Foam::scalar Foam::materialModel::readCoeff
 Foam::scalar Foam::materialModel::readCoeffOrDefault
 (
     const word& key,
-    const scalar deflt
+    const scalar deflt,
+    const coeffRange& range
 ) const
 {
     knownKeywords::add(coeffs_, {key});
-    return coeffs_.found(key) ? readCoeff(key, false) : deflt;
+    return coeffs_.found(key) ? readCoeff(key, range) : deflt;
 }
 
 
@@ -60,7 +92,7 @@ Foam::materialModel::materialModel
 )
 :
     coeffs_(coeffs),
-    rho_(readCoeff("rho")),
+    rho_(readCoeff("rho", densityRange)),
     volumetricSmoothing_
     (
         coeffs.getOrDefault<bool>("volumetricSmoothing", smoothByDefault)

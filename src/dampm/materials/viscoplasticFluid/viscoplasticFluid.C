@@ -44,6 +44,27 @@ namespace materialModels
 }
 
 
+const Foam::materialModel::coeffRange
+Foam::materialModels::viscoplasticFluid::soundSpeedRange
+{
+    1e-3, true, 1e5, true, "m/s"
+};
+
+
+const Foam::materialModel::coeffRange
+Foam::materialModels::viscoplasticFluid::exponentRange
+{
+    1, true, 100, true, ""
+};
+
+
+const Foam::materialModel::coeffRange
+Foam::materialModels::viscoplasticFluid::pressureCutRange
+{
+    -1e13, true, 0, true, "Pa"
+};
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::materialModels::viscoplasticFluid::viscoplasticFluid
@@ -54,33 +75,20 @@ Foam::materialModels::viscoplasticFluid::viscoplasticFluid
 :
     materialModel(coeffs, true),
     viscosity_(coeffs, law),
-    c_(readCoeff("c")),
-    gamma_(coeffs.getOrDefault<scalar>("gamma", 7)),
-    pMin_(coeffs.getOrDefault<scalar>("pMin", 0)),
+    // rho and c within their ranges: rho c^2 and its quarter are finite
+    c_(readCoeff("c", soundSpeedRange)),
+    gamma_(readCoeffOrDefault("gamma", 7, exponentRange)),
+    pMin_(readCoeffOrDefault("pMin", 0, pressureCutRange)),
     G_
     (
         readCoeffOrDefault
         (
             "shearModulus",
-            law == yieldViscosity::lawType::Newtonian ? 0 : 0.25*rho_*c_*c_
+            law == yieldViscosity::lawType::Newtonian ? 0 : 0.25*rho_*c_*c_,
+            stressRange
         )
     )
-{
-    knownKeywords::add(coeffs, {"gamma", "pMin"});
-
-    if (!(gamma_ >= 1))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "gamma = " << gamma_ << " is invalid; allowed: gamma >= 1"
-            << exit(FatalIOError);
-    }
-    if (!(pMin_ <= 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "pMin = " << pMin_ << " is invalid; allowed: pMin <= 0 [Pa]"
-            << exit(FatalIOError);
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -15,11 +15,23 @@ License
 #include "particleCloudIO.H"
 #include "particleMemory.H"
 #include "Time.H"
+#include "fpTrapsHeld.H"
+#include "HashSet.H"
+#include "OStringStream.H"
+#include <cmath>
 #include <numeric>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::word Foam::mpm3dFlow::cloudName("mpm3dCloud");
+
+const Foam::Enum<Foam::mpm3dFlow::overlapType>
+Foam::mpm3dFlow::overlapTypeNames
+({
+    { overlapType::error, "error" },
+    { overlapType::add, "add" },
+    { overlapType::skip, "skip" },
+});
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -85,6 +97,18 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
     const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*n*n);
     const scalar rho0 = material_->rho();
     const scalar gMag = mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
+    const boundBox mesh
+    (
+        point(g.origin[0], g.origin[1], g.origin[2]),
+        point(g.upper(0), g.upper(1), g.upper(2))
+    );
+    // Faster than any flow: the kinetic energy and the step stay finite
+    const scalar maxSpeed = 1e5;
+
+    // The regions seeded so far: a lattice position inside one of their
+    // boxes holds their particles already
+    DynamicList<boundBox> earlier;
+    DynamicList<word> earlierNames;
 
     for (const entry& e : regions)
     {
@@ -98,7 +122,11 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         const dictionary& dict = e.dict();
         knownKeywords::add
         (
-            dict, {"type", "min", "max", "U", "hydrostatic", "freeSurface"}
+            dict,
+            {
+                "type", "min", "max", "U", "hydrostatic", "freeSurface",
+                "overlap"
+            }
         );
         const word type = dict.get<word>("type");
         if (type != "box")
@@ -107,8 +135,23 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 << "type " << type << " is invalid; allowed: box"
                 << exit(FatalIOError);
         }
-        const boundBox box(dict.get<point>("min"), dict.get<point>("max"));
+        const boundBox box
+        (
+            barrierModel::readPoint(dict, "min"),
+            barrierModel::readPoint(dict, "max")
+        );
         const vector U = dict.getOrDefault<vector>("U", Zero);
+        scalar speed = 0;
+        {
+            const fpTrapsHeld hold;
+            speed = mag(U);
+        }
+        if (!(speed <= maxSpeed))
+        {
+            FatalIOErrorInFunction(dict)
+                << "U = " << U << " is invalid; allowed: |U| <= " << maxSpeed
+                << " m/s" << exit(FatalIOError);
+        }
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
         const scalar zs =
             dict.getOrDefault<scalar>("freeSurface", box.max().z());
@@ -118,8 +161,15 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             "the initial region " + e.keyword() + " (constant/mpm3dProperties)",
             g, n
         );
+        const overlapType overlap = overlapTypeNames.getOrDefault
+        (
+            "overlap", dict, overlapType::error
+        );
 
+        // The lattice positions in the box; those of earlier regions
         std::vector<point> pts;
+        label nShared = 0;
+        wordHashSet shared;
         for (label k = 0; k < g.nCells[2]*n; ++k)
         {
             const scalar z = g.origin[2] + (k + 0.5)*g.dx[2]/n;
@@ -132,22 +182,107 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                     (
                         g.origin[0] + (i + 0.5)*g.dx[0]/n, y, z
                     );
-                    if (box.contains(x))
+                    if (!box.contains(x))
+                    {
+                        continue;
+                    }
+                    bool inEarlier = false;
+                    forAll(earlier, r)
+                    {
+                        if (earlier[r].contains(x))
+                        {
+                            inEarlier = true;
+                            shared.insert(earlierNames[r]);
+                        }
+                    }
+                    nShared += inEarlier;
+                    if (!(inEarlier && overlap == overlapType::skip))
                     {
                         pts.push_back(x);
                     }
                 }
             }
         }
+        // The earlier regions it overlaps, for the messages
+        string sharedWith;
+        for (const word& r : shared.sortedToc())
+        {
+            sharedWith += (sharedWith.empty() ? "" : ", ") + r;
+        }
+        if (nShared && overlap == overlapType::error)
+        {
+            FatalIOErrorInFunction(dict)
+                << "initial region " << e.keyword() << " (" << box.min()
+                << " to " << box.max() << ") overlaps the earlier region(s) "
+                << sharedWith.c_str() << " at " << nShared
+                << " particle positions: " << nShared*subVolume << " m^3, "
+                << rho0*nShared*subVolume << " kg would be seeded twice;"
+                << " allowed: regions that do not overlap, or the keyword"
+                << " overlap in this region: add (both regions' particles,"
+                << " twice the mass there) or skip (the overlap stays the"
+                << " earlier region's)" << exit(FatalIOError);
+        }
         if (pts.empty())
         {
             FatalIOErrorInFunction(dict)
                 << "initial region " << e.keyword() << " (" << box.min()
                 << " to " << box.max() << ") holds no particle position of"
-                << " the grid" << exit(FatalIOError);
+                << " the grid (the mesh spans " << mesh.min() << " to "
+                << mesh.max() << ")"
+                << (nShared ? ": all of them are in earlier regions" : "")
+                << exit(FatalIOError);
+        }
+
+        // No particle may start inside a barrier
+        label nInside = 0;
+        const label holding = barrierHolding
+        (
+            pointField(UList<point>(pts.data(), label(pts.size()))),
+            nInside
+        );
+        if (holding >= 0)
+        {
+            OStringStream barrier;
+            barriers_[holding].describeGeometry(barrier);
+            FatalIOErrorInFunction(dict)
+                << nInside << " of the " << pts.size() << " particles of"
+                << " initial region " << e.keyword() << " (" << box.min()
+                << " to " << box.max() << ") would start inside barrier "
+                << barriers_[holding].name() << " (" << barrier.str().c_str()
+                << "); allowed: regions outside the barriers (move or shrink"
+                << " the region)" << exit(FatalIOError);
+        }
+
+        // The deepest particle's state at rest, before any is made: J too
+        // small would give huge masses
+        if (hydrostatic)
+        {
+            scalar zMin = GREAT;
+            for (const point& x : pts)
+            {
+                zMin = min(zMin, x.z());
+            }
+            scalar pMax = 0, JMin = 0;
+            {
+                const fpTrapsHeld hold;
+                pMax = rho0*gMag*max(zs - zMin, 0.0);
+                JMin = material_->restJ(pMax);
+            }
+            if (!(std::isfinite(pMax) && JMin >= 0.5 && JMin <= 1))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "freeSurface = " << zs << " of the hydrostatic initial"
+                    << " region " << e.keyword() << " gives a pressure of "
+                    << pMax << " Pa at its deepest particle (z = " << zMin
+                    << " m), which compresses the material to J = " << JMin
+                    << "; allowed: a free surface for which J >= 0.5 (the"
+                    << " material keeps at least half its volume)"
+                    << exit(FatalIOError);
+            }
         }
 
         const label first = particles_.append(label(pts.size()));
+        scalar mass = 0;
         for (size_t q = 0; q < pts.size(); ++q)
         {
             const label i = first + label(q);
@@ -167,9 +302,46 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             particles_.column(sigma_)[i] = -p;
             particles_.column(sigma_ + 3)[i] = -p;
             particles_.column(sigma_ + 5)[i] = -p;
+            mass += rho0*subVolume/J;
         }
+
+        // What was kept, and what of the box lies outside the mesh
+        bool beyond = false;
+        scalar inside = 1;
+        for (direction d = 0; d < 3; ++d)
+        {
+            beyond =
+                beyond
+             || box.min()[d] < mesh.min()[d] || box.max()[d] > mesh.max()[d];
+            inside *= max
+            (
+                min(box.max()[d], mesh.max()[d])
+              - max(box.min()[d], mesh.min()[d]),
+                0.0
+            );
+        }
+        const scalar outside = beyond ? box.volume() - inside : 0;
         Info<< "Initial region " << e.keyword() << ": " << pts.size()
-            << " particles" << (hydrostatic ? ", hydrostatic" : "") << endl;
+            << " particles" << (hydrostatic ? ", hydrostatic" : "")
+            << ", kept " << mass << " kg";
+        if (outside > 0)
+        {
+            Info<< "; lost " << rho0*outside << " kg: " << outside << " m^3"
+                << " of its box lies outside the mesh (" << mesh.min()
+                << " to " << mesh.max() << "; at the reference density, not"
+                << " seeded)";
+        }
+        if (nShared)
+        {
+            Info<< "; overlaps " << sharedWith.c_str() << " at " << nShared
+                << " particle positions, "
+                << (overlap == overlapType::add
+                    ? "seeded twice (overlap add: twice the mass there)"
+                    : "left to them (overlap skip)");
+        }
+        Info<< endl;
+        earlier.append(box);
+        earlierNames.append(e.keyword());
     }
     if (particles_.size() == 0)
     {
@@ -177,6 +349,30 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             << "initialRegions holds no region: nothing to simulate"
             << exit(FatalIOError);
     }
+}
+
+
+Foam::label Foam::mpm3dFlow::barrierHolding
+(
+    const pointField& points,
+    label& nInside
+) const
+{
+    nInside = 0;
+    forAll(barriers_, b)
+    {
+        boolList in;
+        barriers_[b].inside(points, in);
+        for (const bool i : in)
+        {
+            nInside += i;
+        }
+        if (nInside)
+        {
+            return b;
+        }
+    }
+    return -1;
 }
 
 

@@ -10,7 +10,7 @@ License
 
 #include "releaseModel.H"
 #include "knownKeywords.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "OStringStream.H"
 #include "IOmanip.H"
 #include <algorithm>
@@ -100,7 +100,7 @@ void Foam::releaseModel::sampleColumns
     bool bad = false;
     scalar at[3] = {0, 0, 0};
     {
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         for (label j = 0; j < g.nCells[1]*n && !bad; ++j)
         {
             const scalar yp = g.origin[1] + (j + 0.5)*g.dx[1]/n;
@@ -240,7 +240,7 @@ Foam::scalar Foam::releaseModel::volumeOutside
     const scalar area = s[0]*s[1]*stride*stride;
 
     scalar volume = 0;
-    fpTrapMask masked;
+    fpTrapsHeld masked;
     for (label b = 0; b < nB; ++b)
     {
         const scalar yp = g.origin[1] + (first[1] + (b + 0.5)*stride)*s[1];

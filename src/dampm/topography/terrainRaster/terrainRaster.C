@@ -9,7 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "terrainRaster.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -768,7 +768,7 @@ Foam::terrainRaster::terrainRaster
     // Read with the traps masked: a NaN, an inf or an overflow in the file
     // is a value to refuse (or NODATA), not a SIGFPE inside GDAL or here
     {
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         if (ext == "asc")
         {
             readAsc();
@@ -911,7 +911,7 @@ void Foam::terrainRaster::writeGeoTiff
     const sampleType type
 ) const
 {
-    fpTrapMask masked;
+    fpTrapsHeld masked;
     registerGdal();
     mkDir(file.path());
     GDALDriverH driver = GDALGetDriverByName("GTiff");

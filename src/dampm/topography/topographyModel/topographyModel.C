@@ -10,7 +10,7 @@ License
 
 #include "topographyModel.H"
 #include "knownKeywords.H"
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "OStringStream.H"
 #include "IOmanip.H"
 #include <cmath>
@@ -53,7 +53,7 @@ void Foam::topographyModel::sampleNodes
     const gridGeometry::index nG = gridGeometry::nGhost;
     label bad = -1;
     {
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         for (label j = 0; j < g.nNodesDir[1]; ++j)
         {
             for (label i = 0; i < g.nNodesDir[0]; ++i)

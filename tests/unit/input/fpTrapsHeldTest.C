@@ -7,14 +7,14 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    fpTrapMask: under the solvers' floating-point traps, operations inside
+    fpTrapsHeld: under the solvers' floating-point traps, operations inside
     the scope give NaN and inf instead of SIGFPE, and on leaving it the
     traps and flags are those of before (nothing raised inside leaks out);
     scopes nest.
 
 \*---------------------------------------------------------------------------*/
 
-#include "fpTrapMask.H"
+#include "fpTrapsHeld.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
 #include <cfenv>
@@ -31,7 +31,7 @@ constexpr int solverTraps = FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW;
 } // End anonymous namespace
 
 
-TEST(fpTrapMask, InvalidOperationsGiveNaNAndInfAndTheTrapsComeBack)
+TEST(fpTrapsHeld, InvalidOperationsGiveNaNAndInfAndTheTrapsComeBack)
 {
     const solverFpTraps traps;
     ASSERT_EQ(fegetexcept(), solverTraps);
@@ -40,7 +40,7 @@ TEST(fpTrapMask, InvalidOperationsGiveNaNAndInfAndTheTrapsComeBack)
     volatile double big = 1e300;
     double quotient, root, product;
     {
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         EXPECT_EQ(fegetexcept(), 0);
         quotient = 1/zero;
         root = std::sqrt(-1 - zero);
@@ -48,7 +48,7 @@ TEST(fpTrapMask, InvalidOperationsGiveNaNAndInfAndTheTrapsComeBack)
         EXPECT_NE(fetestexcept(FE_DIVBYZERO | FE_INVALID), 0);
 
         {
-            fpTrapMask inner;
+            fpTrapsHeld inner;
             EXPECT_EQ(fetestexcept(FE_ALL_EXCEPT), 0);
         }
         EXPECT_EQ(fegetexcept(), 0);
@@ -64,14 +64,14 @@ TEST(fpTrapMask, InvalidOperationsGiveNaNAndInfAndTheTrapsComeBack)
 }
 
 
-TEST(fpTrapMask, WithoutTrapsNothingChanges)
+TEST(fpTrapsHeld, WithoutTrapsNothingChanges)
 {
     ASSERT_EQ(fegetexcept(), 0);
     feclearexcept(FE_ALL_EXCEPT);
     feraiseexcept(FE_INEXACT);
     volatile double zero = 0;
     {
-        fpTrapMask masked;
+        fpTrapsHeld masked;
         EXPECT_TRUE(std::isinf(1/zero));
     }
     EXPECT_EQ(fegetexcept(), 0);
