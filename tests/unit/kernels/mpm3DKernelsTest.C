@@ -21,6 +21,7 @@ Description
 #include "shapeKernels.H"
 #include "stencil.H"
 #include <gtest/gtest.h>
+#include <array>
 #include <random>
 
 using namespace Foam;
@@ -28,8 +29,8 @@ using namespace Foam;
 namespace
 {
 
-// The repro's channel: 5 cm cells, walls at x min, both y sides and the
-// floor, open at x max and the top
+// A channel walled as stability/restart3D's: 5 cm cells, walls at x min,
+// both y sides and the floor, open at x max and the top
 gridGeometry channel()
 {
     gridGeometry g;
@@ -45,6 +46,17 @@ constexpr bool channelWalls[3][2] = {{true, false}, {true, true}, {true, false}}
 
 constexpr label maxStale = 1;
 
+// The particles' position columns (they move when the particles are sorted)
+std::array<double*, 3> positions(particleArrays& p)
+{
+    return
+    {
+        p.column(particleArrays::X),
+        p.column(particleArrays::Y),
+        p.column(particleArrays::Z)
+    };
+}
+
 // A layer one cell deep on the floor over the first quarter of the channel,
 // and a block from 2 to 4 cells above the floor, 1.5 cells from each side
 // wall, in the second half
@@ -54,12 +66,7 @@ particleArrays layerAndBlock(const gridGeometry& g, std::mt19937& gen)
     particleArrays p;
     const label nLayer = 400, nBlock = 400;
     p.append(nLayer + nBlock);
-    double* x[3] =
-    {
-        p.column(particleArrays::X),
-        p.column(particleArrays::Y),
-        p.column(particleArrays::Z)
-    };
+    const std::array<double*, 3> x = positions(p);
     for (label i = 0; i < nLayer + nBlock; ++i)
     {
         const bool layer = i < nLayer;
@@ -161,12 +168,7 @@ TEST(mpm3DKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
     {
         // Drift by up to 0.3 cells per axis, the block kept clear of the
         // floor's and side walls' ghost rows
-        double* x[3] =
-        {
-            p.column(particleArrays::X),
-            p.column(particleArrays::Y),
-            p.column(particleArrays::Z)
-        };
+        const std::array<double*, 3> x = positions(p);
         for (label i = 0; i < p.size(); ++i)
         {
             if (x[2][i] < g.dx[2])
@@ -200,14 +202,12 @@ TEST(mpm3DKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
         for (mpm3DGrid* grid : {&nodes, &fresh})
         {
             double* mass = grid->mass.data();
+            const std::array<double*, 3> x = positions(p);
             for (label i = 0; i < p.size(); ++i)
             {
                 const stencil<3, quadraticBSplineKernel> s
                 (
-                    g, quadraticBSplineKernel(),
-                    p.column(particleArrays::X)[i],
-                    p.column(particleArrays::Y)[i],
-                    p.column(particleArrays::Z)[i]
+                    g, quadraticBSplineKernel(), x[0][i], x[1][i], x[2][i]
                 );
                 s.forEachNode
                 (
