@@ -714,6 +714,7 @@ void Foam::mpm3dFlow::particlesToGrid()
     activeNodes_.unite(stencilNodes_);
     std::swap(lastRows_, stencilRows_);
     particles_.stencilRows(g, schedule_.maxStale(), stencilRows_);
+    wallFoldSpans(g, settings_.wall, stencilRows_);
     activeRows_.unite(lastRows_, stencilRows_);
     stencilNodes_.rows = &stencilRows_;
     activeNodes_.rows = &activeRows_;
