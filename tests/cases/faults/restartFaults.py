@@ -217,6 +217,18 @@ def fullDisk(c, ref, times):
 
 # Edits of a cloud's files ----------------------------------------------------
 
+def expandUniform(text):
+    """A uniform list 'N{value}' (OpenFOAM writes one when every value is the
+    same) as the list 'N ( value ... value )'."""
+    m = re.search(r"\n(\d+)\{([^}]*)\}", text[text.index("}") + 1:])
+    if not m:
+        return text
+    i = text.index("}") + 1 + m.start()
+    n, value = int(m.group(1)), m.group(2)
+    body = "\n%d\n(\n%s)" % (n, "".join(value + "\n" for _ in range(n)))
+    return text[:i] + body + text[i + len(m.group(0)):]
+
+
 def firstValue(text):
     """(start, end) of the first value of a cloud file's list: a number or a
     (...) group after 'N ('."""
@@ -232,6 +244,7 @@ def firstValue(text):
 
 def setFirst(value):
     def edit(text):
+        text = expandUniform(text)
         i, j = firstValue(text)
         return text[:i] + value + text[j:]
     return edit
@@ -239,6 +252,7 @@ def setFirst(value):
 
 def announceMore(text):
     """The list says one value more than it holds."""
+    text = expandUniform(text)
     start = text.index("}")
     m = re.search(r"\n(\d+)\s*\(", text[start:])
     n = int(m.group(1))
@@ -247,6 +261,7 @@ def announceMore(text):
 
 
 def emptyList(text):
+    text = expandUniform(text)
     start = text.index("}")
     m = re.search(r"\n(\d+)\s*\(", text[start:])
     i = start + m.start(1)
