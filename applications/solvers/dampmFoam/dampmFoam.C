@@ -56,6 +56,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
+    const word solverName("dampmFoam");
     #include "createMPMTime.H"
     #include "createMesh.H"
     #include "createFields.H"

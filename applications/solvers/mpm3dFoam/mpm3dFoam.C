@@ -57,6 +57,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
+    const word solverName("mpm3dFoam");
     #include "createMPMTime.H"
     #include "createMesh.H"
     #include "createFields.H"

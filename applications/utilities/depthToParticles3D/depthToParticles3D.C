@@ -104,7 +104,10 @@ int main(int argc, char *argv[])
     mpmTimeControls::checkControlDict(args.path(), false);
     particleMemory::exitOnOutOfMemory();
     Info<< "Create time\n" << endl;
-    mpmTime runTime(Time::controlDictName, args, false);
+    mpmTime runTime
+    (
+        Time::controlDictName, args, "depthToParticles3D", false
+    );
     #include "createMesh.H"
 
     #include "createSourceCase.H"

@@ -158,7 +158,11 @@ def newRun(name, base=".", times=(), entries=None):
 
 
 def complete(case, time):
-    return os.path.isfile(os.path.join(case, time, "uniform", recordName))
+    """Has the time directory its whole record (mpmTime: ending with
+    OpenFOAM's end divider)?"""
+    path = os.path.join(case, time, "uniform", recordName)
+    divider = "// " + "*" * 73 + " //"
+    return os.path.isfile(path) and open(path).read().rstrip().endswith(divider)
 
 
 def start(case, log):

@@ -95,7 +95,7 @@ def killed(c, times, nKills=8, seed=5):
         shutil.rmtree(os.path.join(run, "postProcessing"), ignore_errors=True)
         p = fc.start(run, "log.kill%d" % k)
         fc.waitForRows(p, run, c.solver, 1)
-        time.sleep(rng.uniform(0.0, 0.4))
+        time.sleep(rng.uniform(0.0, 0.25))
         if p.poll() is not None:
             break
         p.kill()
@@ -106,6 +106,7 @@ def killed(c, times, nKills=8, seed=5):
             incomplete += 1
         check(any(fc.complete(run, d) for d in dirs),
               "kill %d: a complete time directory remains (%s)" % (k, dirs))
+    check(kills == nKills, "%d of %d kills hit the run before it ended" % (kills, nKills))
     status, out = c.run(run, "log.kill.end")
     fc.checkAccepted("after %d kills" % kills, status, out)
     final = fc.timeDirs(ref)[-1]
@@ -128,6 +129,15 @@ def incompleteDirectories(c, ref, times):
     fc.checkAccepted("incomplete", status, out,
                      ["time directory %s is incomplete" % t2, "Starting from %s" % t1])
     fc.sameFiles(ref, run, times[-1], c.finalFiles(ref, times[-1]), "incomplete: fell back and")
+
+    # A write stopped before its first file: an empty directory after a
+    # complete one is incomplete, not a fresh start (no release again)
+    run = fc.newRun("emptyLatest", base=ref, times=times[:2])
+    os.makedirs(os.path.join(run, t2, "uniform"))
+    status, out = c.run(run)
+    fc.checkAccepted("emptyLatest", status, out,
+                     ["time directory %s is incomplete" % t2, "Starting from %s" % t1])
+    fc.sameFiles(ref, run, times[-1], c.finalFiles(ref, times[-1]), "emptyLatest: fell back and")
 
     run = fc.newRun("incompleteStartTime", base=ref, times=times[:3],
                     entries={"startFrom": "startTime", "startTime": t2})

@@ -121,6 +121,25 @@ TEST(strictIOdictionary, OverwriteAndMergeOnPurposeAccepted)
     EXPECT_EQ(m.get<label>("a"), 3);
     EXPECT_EQ(entry::globalInputMode, entry::inputMode::MERGE);
 
+    // An entry inherited with $name overridden (OpenFOAM's usual pattern);
+    // the override itself written twice is refused
+    dictionary inherit;
+    EXPECT_EQ
+    (
+        readError("base { a 1; b 2; }\nderived\n{\n    $base;\n    b 3;\n}\n",
+            inherit),
+        ""
+    );
+    EXPECT_EQ(inherit.subDict("derived").get<label>("b"), 3);
+    EXPECT_EQ(inherit.subDict("derived").get<label>("a"), 1);
+    dictionary twice;
+    const std::string message
+    (
+        readError("base { b 2; }\nderived { $base; b 3; b 4; }\n", twice)
+    );
+    EXPECT_NE(message.find("duplicate keyword \"b\" in derived"),
+        std::string::npos) << message;
+
     // A plain dictionary read afterwards merges, as OpenFOAM's default
     IStringStream is("a 1;\na 4;\n");
     const dictionary plain(is);

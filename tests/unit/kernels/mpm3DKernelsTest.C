@@ -42,7 +42,8 @@ gridGeometry channel()
     return g;
 }
 
-constexpr bool channelWalls[3][2] = {{true, false}, {true, true}, {true, false}};
+constexpr bool channelWalls[3][2] =
+    {{true, false}, {true, true}, {true, false}};
 
 constexpr label maxStale = 1;
 
@@ -70,7 +71,8 @@ particleArrays layerAndBlock(const gridGeometry& g, std::mt19937& gen)
     for (label i = 0; i < nLayer + nBlock; ++i)
     {
         const bool layer = i < nLayer;
-        x[0][i] = layer ? 0.25*u(gen)*g.upper(0) : (0.5 + 0.3*u(gen))*g.upper(0);
+        x[0][i] =
+            layer ? 0.25*u(gen)*g.upper(0) : (0.5 + 0.3*u(gen))*g.upper(0);
         x[1][i] = layer
             ? u(gen)*g.upper(1)
             : 1.5*g.dx[1] + u(gen)*(g.upper(1) - 3*g.dx[1]);

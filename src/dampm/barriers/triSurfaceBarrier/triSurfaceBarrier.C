@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "triSurfaceBarrier.H"
+#include "errorsThrown.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "OSspecific.H"
@@ -62,9 +63,9 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
     // The readers stop with their own message on a broken file: catch it
     // and say which barrier and keyword it came from
     string why;
-    const bool throwing = FatalError.throwExceptions();
     try
     {
+        const errorsThrown throwing;
         surface_.reset
         (
             stl
@@ -76,7 +77,6 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
     {
         why = err.message();
     }
-    FatalError.throwExceptions(throwing);
 
     if (!why.empty() || !surface_ || surface_->empty())
     {

@@ -16,6 +16,7 @@ License
 #include "OSspecific.H"
 #include "Pstream.H"
 #include "exactPrecision.H"
+#include "errorsThrown.H"
 
 #include <fstream>
 #include <zlib.h>
@@ -32,15 +33,17 @@ volatile std::sig_atomic_t Foam::mpmTime::stopSignal_ = 0;
 void Foam::mpmTime::catchStop(int sig)
 {
     stopSignal_ = sig;
+    // A second signal, either of them, stops at once
+    std::signal(SIGTERM, SIG_DFL);
+    std::signal(SIGINT, SIG_DFL);
 }
 
 
 void Foam::mpmTime::catchStopSignals()
 {
-    struct sigaction action;
+    struct sigaction action{};
     sigemptyset(&action.sa_mask);
-    // A second signal takes the default action: it stops at once
-    action.sa_flags = SA_RESETHAND;
+    action.sa_flags = SA_RESTART;
     action.sa_handler = catchStop;
     for (const int sig : {SIGTERM, SIGINT})
     {
@@ -55,7 +58,14 @@ void Foam::mpmTime::catchStopSignals()
 void Foam::mpmTime::checkStartTime()
 {
     const fileName dir(timePath());
-    const directoryState s = state(dir);
+    const instantList all(times());
+    label here = -1;
+    forAll(all, i)
+    {
+        here = all[i].name() == timeName() ? i : here;
+    }
+    const directoryState s =
+        here < 0 ? state(dir) : state(path(), all, here);
     if (s == directoryState::complete)
     {
         startWriter_ = writer(dir);
@@ -69,30 +79,16 @@ void Foam::mpmTime::checkStartTime()
     }
 
     // Incomplete: the last complete time directory before it
-    const instantList all(times());
-    label previous = -1;
-    forAll(all, i)
-    {
-        if
-        (
-            all[i].name() != constant()
-         && all[i].value() < value()
-         && state(path()/all[i].name()) == directoryState::complete
-        )
-        {
-            previous = i;
-        }
-    }
+    const label previous = lastCompleteBefore(path(), all, value());
     const word startFrom =
         controlDict().getOrDefault<word>("startFrom", "latestTime");
-
     if (startFrom != "latestTime" || previous < 0)
     {
         FatalErrorInFunction
-            << "time directory " << dir << " is incomplete: it holds output"
-            << " but no uniform/" << recordName << " (the run that wrote it"
-            << " was stopped while writing, or the disk was full), so it"
-            << " cannot be restarted from. ";
+            << "time directory " << dir << " is incomplete: it has no uniform/"
+            << recordName << " (the run that wrote it was stopped while"
+            << " writing, or the disk was full; or dampm wrote it before these"
+            << " records: doc/faults.md), so it cannot be restarted from. ";
         if (previous < 0)
         {
             FatalError
@@ -258,17 +254,18 @@ Foam::mpmTime::mpmTime
 (
     const word& ctrlDictName,
     const argList& args,
-    const bool checkStart
+    const word& application,
+    const bool solver
 )
 :
     Time(ctrlDictName, args),
-    application_(args.executable()),
+    application_(application),
     startedAt_(startTime_),
     stopAnnounced_(false)
 {
-    catchStopSignals();
-    if (checkStart)
+    if (solver)
     {
+        catchStopSignals();
         checkStartTime();
     }
 }
@@ -293,6 +290,64 @@ Foam::mpmTime::directoryState Foam::mpmTime::state(const fileName& timeDir)
         return directoryState::incomplete;
     }
     return directoryState::fresh;
+}
+
+
+Foam::mpmTime::directoryState Foam::mpmTime::state
+(
+    const fileName& caseDir,
+    const instantList& times,
+    const label i
+)
+{
+    const directoryState s = state(caseDir/times[i].name());
+    return
+        s == directoryState::fresh
+     && lastCompleteBefore(caseDir, times, times[i].value()) >= 0
+      ? directoryState::incomplete
+      : s;
+}
+
+
+Foam::label Foam::mpmTime::lastCompleteBefore
+(
+    const fileName& caseDir,
+    const instantList& times,
+    const scalar t
+)
+{
+    label previous = -1;
+    forAll(times, i)
+    {
+        if
+        (
+            times[i].name() != "constant"
+         && times[i].value() < t
+         && state(caseDir/times[i].name()) == directoryState::complete
+        )
+        {
+            previous = i;
+        }
+    }
+    return previous;
+}
+
+
+Foam::label Foam::mpmTime::latestStart
+(
+    const fileName& caseDir,
+    const instantList& times
+)
+{
+    const label last = times.size() - 1;
+    if (last < 0 || times[last].name() == "constant")
+    {
+        return -1;
+    }
+    return
+        state(caseDir, times, last) == directoryState::incomplete
+      ? lastCompleteBefore(caseDir, times, times[last].value())
+      : last;
 }
 
 
@@ -378,7 +433,8 @@ Foam::dimensionedScalar Foam::mpmTime::startTime() const
 
 void Foam::mpmTime::exitIfStopped() const
 {
-    if (stopSignal_)
+    // A signal after the last step's start stopped nothing
+    if (stopAnnounced_)
     {
         Info<< "Stopped by signal " << int(stopSignal_) << " at time "
             << timeName() << " (written): exit code " << 128 + stopSignal_
@@ -426,10 +482,9 @@ bool Foam::mpmTime::writeObject
     bool written = false;
     fileNameList broken;
     string failure;
-    const bool throwing = FatalError.throwExceptions();
-    const bool throwingIO = FatalIOError.throwExceptions();
     try
     {
+        const errorsThrown throwing;
         bool ok = writeTimeDict() && whole(timeDict);
         const double since = ok ? highResLastModified(timeDict) : 0;
         ok = ok && objectRegistry::writeObject(fmt, ver, cmp, valid);
@@ -444,8 +499,6 @@ bool Foam::mpmTime::writeObject
     {
         failure = e.message();
     }
-    FatalError.throwExceptions(throwing);
-    FatalIOError.throwExceptions(throwingIO);
 
     if (!written)
     {

@@ -10,12 +10,17 @@ License
 
 #include "mpmTimeControls.H"
 #include "mpmTime.H"
+#include "fpTrapsHeld.H"
+#include "errorsThrown.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 #include <cmath>
-#include <fenv.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const bool Foam::mpmTimeControls::adjustTimeStepDefault = true;
+
+const Foam::scalar Foam::mpmTimeControls::maxCoDefault = 0.4;
 
 const Foam::scalar Foam::mpmTimeControls::minDeltaTDefault = 1e-10;
 
@@ -35,13 +40,13 @@ using namespace Foam;
 //  "ill defined" entry, is reported with what is allowed.
 dictionary readUntrapped(const fileName& file)
 {
-    const int trapped = fedisableexcept(FE_ALL_EXCEPT);
-    const bool throwing = FatalIOError.throwExceptions();
     dictionary dict;
     string failure, failedFile;
     label failedLine = -1;
     try
     {
+        const fpTrapsHeld hold;
+        const errorsThrown throwing;
         IFstream is(file);
         dict = dictionary(is);
     }
@@ -50,12 +55,6 @@ dictionary readUntrapped(const fileName& file)
         failure = err.message();
         failedFile = err.ioFileName();
         failedLine = err.ioStartLineNumber();
-    }
-    FatalIOError.throwExceptions(throwing);
-    feclearexcept(FE_ALL_EXCEPT);
-    if (trapped != -1)
-    {
-        feenableexcept(trapped);
     }
     if (!failure.empty())
     {
@@ -175,23 +174,15 @@ void Foam::mpmTimeControls::checkControlDict
         }
         else if (times.size())
         {
-            // The latest: mpmTime falls back from incomplete directories
-            label last = times.size() - 1;
-            while
-            (
-                last > 0
-             && mpmTime::state(caseDir/times[last].name())
-             == mpmTime::directoryState::incomplete
-            )
+            // The latest: mpmTime falls back from an incomplete one
+            const label last =
+                startFrom == "firstTime"
+              ? 0
+              : mpmTime::latestStart(caseDir, times);
+            if (last >= 0 && times[last].name() != "constant")
             {
-                --last;
-            }
-            const instant& t =
-                startFrom == "firstTime" ? times.first() : times[last];
-            if (t.name() != "constant")
-            {
-                startDir = t.name();
-                start = t.value();
+                startDir = times[last].name();
+                start = times[last].value();
             }
         }
     }
@@ -223,7 +214,7 @@ void Foam::mpmTimeControls::checkControlDict
 
     // Steps
     const bool adjustTimeStep =
-        dict.getOrDefault<bool>("adjustTimeStep", true);
+        dict.getOrDefault<bool>("adjustTimeStep", adjustTimeStepDefault);
     const scalar deltaT =
         finiteNumber(dict, "deltaT", "finite deltaT > 0 [s]", found);
     if (!found)

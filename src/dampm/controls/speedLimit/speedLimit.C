@@ -19,6 +19,8 @@ License
 
 const Foam::scalar Foam::speedLimit::factor = 10;
 
+const Foam::scalar Foam::speedLimit::maximum = 1e5;
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,11 +30,12 @@ Foam::speedLimit::speedLimit(const dictionary& dict)
     given_(dict.found("speedLimit"))
 {
     knownKeywords::add(dict, {"speedLimit"});
-    if (given_ && !(limit_ > 0 && std::isfinite(limit_)))
+    if (given_ && !(limit_ > 0 && limit_ <= maximum))
     {
         FatalIOErrorInFunction(dict)
             << "speedLimit = " << limit_ << " is invalid; allowed:"
-            << " finite speedLimit > 0 [m/s]" << exit(FatalIOError);
+            << " 0 < speedLimit <= " << maximum << " [m/s]"
+            << exit(FatalIOError);
     }
 }
 
@@ -51,7 +54,7 @@ void Foam::speedLimit::setDefault(const scalar speedScale)
 {
     if (!given_)
     {
-        limit_ = threeDigits(factor*speedScale);
+        limit_ = min(threeDigits(factor*speedScale), maximum);
     }
 }
 
@@ -74,7 +77,7 @@ void Foam::speedLimit::readState(const dictionary& state)
 void Foam::speedLimit::check
 (
     const scalar speed,
-    const word& what,
+    const char* what,
     const Time& runTime,
     const word& lastWritten
 ) const
@@ -82,7 +85,7 @@ void Foam::speedLimit::check
     if (speed > limit_)
     {
         FatalErrorInFunction
-            << what.c_str() << " " << speed << " m/s at time "
+            << what << " " << speed << " m/s at time "
             << runTime.timeName() << " (deltaT " << runTime.deltaTValue()
             << " s) exceeds speedLimit " << limit_ << " m/s ("
             << (given_ ? "given" : "default: 10 x the speed scale of the start")

@@ -11,6 +11,8 @@ License
 #include "strictIOdictionary.H"
 #include "fpTrapsHeld.H"
 #include "stringOps.H"
+#include "IFstream.H"
+#include "HashSet.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,54 +45,152 @@ Foam::strictIOdictionary::strictIOdictionary(const IOobject& io)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::strictIOdictionary::skipValue(Istream& is)
+{
+    // Up to the ';' outside brackets and blocks; a block ends the entry
+    // (a #codeStream { ... }, a keyword's dictionary)
+    label depth = 0;
+    token t;
+    while (is.read(t).good() || t.good())
+    {
+        if
+        (
+            t == token::BEGIN_LIST
+         || t == token::BEGIN_BLOCK
+        )
+        {
+            ++depth;
+        }
+        else if (t == token::END_LIST)
+        {
+            --depth;
+        }
+        else if (t == token::END_BLOCK)
+        {
+            if (--depth <= 0)
+            {
+                return;
+            }
+        }
+        else if (t == token::END_STATEMENT && depth <= 0)
+        {
+            return;
+        }
+        if (is.eof())
+        {
+            return;
+        }
+    }
+}
+
+
+void Foam::strictIOdictionary::checkLiteral
+(
+    Istream& is,
+    const fileName& dir,
+    const word& scope,
+    wordHashSet& keys,
+    bool& strict
+)
+{
+    token t;
+    while (is.read(t).good() || t.good())
+    {
+        if (t == token::END_BLOCK)
+        {
+            return;
+        }
+        if (!(t.isWord() || t.isString()) || t.isPunctuation())
+        {
+            if (is.eof())
+            {
+                return;
+            }
+            continue;
+        }
+        const word key(t.isWord() ? t.wordToken() : word(t.stringToken()));
+        if (key.starts_with("#include") || key == "#sinclude")
+        {
+            // The included file's entries belong to this scope
+            token file;
+            is.read(file);
+            fileName name(file.isString() ? file.stringToken() : string());
+            name.expand();
+            if (!name.isAbsolute())
+            {
+                name = dir/name;
+            }
+            if (isFile(name))
+            {
+                IFstream included(name);
+                checkLiteral(included, name.path(), scope, keys, strict);
+            }
+            continue;
+        }
+        if (key == "#inputMode")
+        {
+            token mode;
+            is.read(mode);
+            strict = mode.isWord() && mode.wordToken() == "error";
+            continue;
+        }
+        if (key.starts_with("#") || key.starts_with("$"))
+        {
+            // #overwrite, #remove, ...: a replacement on purpose; $name: an
+            // inherited entry, which the keywords after it may override
+            skipValue(is);
+            continue;
+        }
+        if (strict && keys.found(key))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, is.name(), is.lineNumber()
+            )   << "duplicate keyword \"" << key.c_str() << "\" in "
+                << (scope.empty() ? word("the top level") : scope) << " of "
+                << is.name() << ": each keyword may appear once in a"
+                << " dictionary (a second barrier or region of the same name"
+                << " would replace or merge into the first); allowed: distinct"
+                << " names, entries inherited with $name overridden, or, to"
+                << " replace an entry on purpose, #overwrite " << key.c_str()
+                << " ...;" << exit(FatalIOError);
+        }
+        keys.insert(key);
+        token next;
+        is.read(next);
+        if (next == token::BEGIN_BLOCK)
+        {
+            wordHashSet sub;
+            checkLiteral
+            (
+                is, dir, scope.empty() ? key : word(scope + '.' + key), sub,
+                strict
+            );
+        }
+        else if (!(next == token::END_STATEMENT))
+        {
+            is.putBack(next);
+            skipValue(is);
+        }
+    }
+}
+
+
 void Foam::strictIOdictionary::read(Istream& is, dictionary& dict)
 {
     dict.clear();
     dict.name() = is.name();
-
-    // OpenFOAM's message for a duplicate is "duplicate entry: <keyword>" with
-    // the file and line: caught here to say what is allowed
-    string why;
-    fileName file;
-    label line = -1;
-    const bool throwing = FatalIOError.throwExceptions();
-    entry::globalInputMode = entry::inputMode::ERROR;
-    try
     {
         const fpTrapsHeld hold;
         dict.read(is);
     }
-    catch (const IOerror& err)
-    {
-        why = err.message();
-        file = err.ioFileName();
-        line = err.ioStartLineNumber();
-    }
-    entry::resetInputMode();
-    FatalIOError.throwExceptions(throwing);
 
-    if (why.empty())
-    {
-        return;
-    }
-    const string duplicate("duplicate entry: ");
-    if (why.starts_with(duplicate))
-    {
-        const string key(stringOps::trim(why.substr(duplicate.size())));
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__, file, line
-        )   << "duplicate keyword " << key << " in " << dict.name()
-            << ": each keyword may appear once in a dictionary (a second"
-            << " barrier or region of the same name would replace or merge"
-            << " into the first); allowed: distinct names, or, to replace an"
-            << " entry on purpose, #overwrite " << key << " ...;"
-            << exit(FatalIOError);
-    }
-    FatalIOError
-    (
-        FUNCTION_NAME, __FILE__, __LINE__, file, line
-    )   << why.c_str() << exit(FatalIOError);
+    // The keywords as written (not as merged): a $name's entries may be
+    // overridden, a keyword written twice in one scope may not
+    is.rewind();
+    wordHashSet keys;
+    bool strict = true;
+    checkLiteral(is, fileName(is.name()).path(), word::null, keys, strict);
 }
 
 

@@ -96,14 +96,13 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
     const label n = nPerCell_;
     const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*n*n);
     const scalar rho0 = material_->rho();
-    const scalar gMag = mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
+    const scalar gMag =
+        mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
     const boundBox mesh
     (
         point(g.origin[0], g.origin[1], g.origin[2]),
         point(g.upper(0), g.upper(1), g.upper(2))
     );
-    // Faster than any flow: the kinetic energy and the step stay finite
-    const scalar maxSpeed = 1e5;
 
     // The regions seeded so far: a lattice position inside one of their
     // boxes holds their particles already
@@ -146,10 +145,11 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             const fpTrapsHeld hold;
             speed = mag(U);
         }
-        if (!(speed <= maxSpeed))
+        if (!(speed <= speedLimit::maximum))
         {
             FatalIOErrorInFunction(dict)
-                << "U = " << U << " is invalid; allowed: |U| <= " << maxSpeed
+                << "U = " << U << " is invalid; allowed: |U| <= "
+                << speedLimit::maximum
                 << " m/s" << exit(FatalIOError);
         }
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);

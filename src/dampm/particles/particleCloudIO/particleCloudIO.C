@@ -11,6 +11,7 @@ License
 #include "particleCloudIO.H"
 #include "mpmTime.H"
 #include "exactPrecision.H"
+#include "speedLimit.H"
 #include "particle.H"
 #include "cloud.H"
 #include "IOField.H"
@@ -37,7 +38,6 @@ namespace Foam
     );
 }
 
-const Foam::scalar Foam::particleCloudIO::maxSpeed = 1e4;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -521,7 +521,7 @@ void Foam::particleCloudIO::checkCloud
 
     checkRange(particles, dir, "m", 0, false, GREAT);
     checkRange(particles, dir, "V", 0, false, GREAT);
-    checkRange(particles, dir, "U", 0, true, maxSpeed);
+    checkRange(particles, dir, "U", 0, true, speedLimit::maximum);
 }
 
 

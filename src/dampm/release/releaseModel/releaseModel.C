@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "releaseModel.H"
+#include "speedLimit.H"
 #include "knownKeywords.H"
 #include "fpTrapsHeld.H"
 #include "OStringStream.H"
@@ -40,6 +41,13 @@ Foam::releaseModel::releaseModel
     U_(dict.getOrDefault<vector2D>("U", vector2D::zero))
 {
     knownKeywords::add(dict, {"U"});
+    const scalar bound = speedLimit::maximum;
+    if (!(mag(U_.x()) <= bound && mag(U_.y()) <= bound && mag(U_) <= bound))
+    {
+        FatalIOErrorInFunction(dict)
+            << "U = " << U_ << " is invalid; allowed: |U| <= " << bound
+            << " m/s" << exit(FatalIOError);
+    }
 }
 
 

@@ -19,7 +19,12 @@ namespace Foam
 namespace shapeFunctions
 {
     defineTypeNameAndDebug(quadraticBSplineShape, 0);
-    addToRunTimeSelectionTable(shapeFunction, quadraticBSplineShape, dictionary);
+    addToRunTimeSelectionTable
+    (
+        shapeFunction,
+        quadraticBSplineShape,
+        dictionary
+    );
 }
 }
 
