@@ -283,7 +283,7 @@ def standardCorruptions(cloud):
     return {
         "positionOutside": ("positions", setFirst("(1e6 1 1)"),
                             ["positions", "outside the mesh", "1e+06"]),
-        "hugeSpeed": ("U", setFirst("(1e200 0 0)"), [where + "/U", "1e+200", "|U| <= 10000"]),
+        "hugeSpeed": ("U", setFirst("(1e200 0 0)"), [where + "/U", "1e+200", "|U| <= 100000"]),
         "negativeMass": ("m", setFirst("-1"), [where + "/m", "m = -1", "0 < m"]),
         "nanVolume": ("V", setFirst("nan"), [where + "/V"]),
         "countOneShort": ("positions", announceMore, [where + "/positions", "line"]),
