@@ -76,6 +76,38 @@ def read_dat(path):
     return {name: data[:, k] for k, name in enumerate(header)}
 
 
+def dat_value(path, key):
+    """The number a '# key value ...' comment line of a .dat file states
+    (e.g. the width of a barrier's force.dat); None without one."""
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            words = line[1:].split()
+            if len(words) > 1 and words[0] == key:
+                return float(words[1])
+    return None
+
+
+def step_integral(t, F, a, b):
+    """Integral over [a, b] of a per-step series (a solver's .dat: t the
+    steps' end times, F the value of the step ending there, held over it)."""
+    t0 = np.concatenate(([t[0] - (t[1] - t[0])], t[:-1]))
+    return float(np.sum(F * (np.clip(t, a, b) - np.clip(t0, a, b))))
+
+
+def running_mean(t, F, w):
+    """Means of a per-step series over windows of length w, sampled every
+    1e-4 s: the windows' end times and their means."""
+    tu = np.arange(t[0], t[-1], 1e-4)
+    k = int(round(w / 1e-4))
+    if len(tu) <= k:
+        return tu[:1], np.zeros(1)
+    Fu = F[np.minimum(np.searchsorted(t, tu), len(t) - 1)]
+    c = np.concatenate(([0.0], np.cumsum(Fu)))
+    return tu[k - 1:], (c[k:] - c[:-k]) / k
+
+
 def times(case):
     """Numeric time directories of a case, in time order."""
     found = []

@@ -41,6 +41,7 @@ Description
 #include "mpm3dFlow.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"
+#include "surfaceProbes.H"
 #include "stepTimers.H"
 #include "runOutMaps.H"
 #include "mpmTimeControls.H"

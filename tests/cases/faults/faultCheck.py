@@ -42,11 +42,8 @@ def finish():
     print("all checks passed")
 
 
-def timeDirs(case):
-    """The case's time directories, in time order."""
-    names = [d for d in os.listdir(case) if re.fullmatch(r"[-+0-9.eE]+", d)
-             and os.path.isdir(os.path.join(case, d))]
-    return sorted(names, key=float)
+#: The case's time directories, in time order
+timeDirs = dp.times
 
 
 def makeVariant(name, files=None, copy=("system", "constant"), base="."):
@@ -142,7 +139,7 @@ def application(case):
     return re.search(r"^application\s+(\w+);", text, re.M).group(1)
 
 
-def setEntry(path, entry, value):
+def setControl(path, entry, value):
     """Set a dictionary entry with foamDictionary (a/b for sub-entries)."""
     subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value), path],
                    check=True, capture_output=True)
@@ -153,7 +150,7 @@ def newRun(name, base=".", times=(), entries=None):
     directories, with controlDict entries set."""
     work = makeVariant(name, copy=("system", "constant") + tuple(times), base=base)
     for entry, value in (entries or {}).items():
-        setEntry(os.path.join(work, "system", "controlDict"), entry, value)
+        setControl(os.path.join(work, "system", "controlDict"), entry, value)
     return work
 
 

@@ -52,16 +52,15 @@ bool startsWithSolid(const std::string& s)
 //- Is the keyword tok, in lower or upper case (as OpenFOAM's scanner)?
 bool isKeyword(const std::string& tok, const char* key)
 {
-    if (tok == key)
+    bool lower = true, upper = true;
+    size_t i = 0;
+    for (; key[i] && i < tok.size(); ++i)
     {
-        return true;
+        lower = lower && tok[i] == key[i];
+        upper = upper
+         && tok[i] == char(std::toupper(static_cast<unsigned char>(key[i])));
     }
-    std::string upper(key);
-    for (char& c : upper)
-    {
-        c = char(std::toupper(static_cast<unsigned char>(c)));
-    }
-    return tok == upper;
+    return !key[i] && i == tok.size() && (lower || upper);
 }
 
 
@@ -192,12 +191,6 @@ public:
             ++pos_;
         }
     }
-
-    //- The current line
-    Foam::label line() const
-    {
-        return line_;
-    }
 };
 
 } // End anonymous namespace
@@ -205,21 +198,16 @@ public:
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::STLcheck::allowedCoordinate
+void Foam::STLcheck::refuseCoordinate
 (
     const scalar x,
     const std::string& where
 )
 {
-    if (std::abs(x) <= maxCoordinate)
-    {
-        return true;
-    }
     std::ostringstream os;
     os  << where << " has the coordinate " << x << "; "
         << allowedCoordinates();
     error_ = os.str();
-    return false;
 }
 
 
@@ -234,21 +222,30 @@ void Foam::STLcheck::checkBinary(const std::string& bytes)
         {
             std::uint32_t bits;
             std::memcpy(&bits, v + 4*k, 4);
-            std::ostringstream where;
-            where
-                << "triangle " << t + 1 << " of " << nTriangles_
-                << " (counted from 1), vertex " << k/3 + 1;
-            if (((bits >> 23) & 0xff) == 0xff)
+            // The bits first: a signalling NaN is not loaded
+            const bool nonFinite = ((bits >> 23) & 0xff) == 0xff;
+            float x = 0;
+            if (!nonFinite)
             {
-                error_ = where.str()
-                  + " has a coordinate that is not a number (NaN) or is"
-                    " infinite; " + allowedCoordinates();
-                return;
+                std::memcpy(&x, &bits, 4);
             }
-            float x;
-            std::memcpy(&x, &bits, 4);
-            if (!allowedCoordinate(x, where.str()))
+            if (nonFinite || !allowedCoordinate(x))
             {
+                // The message only for the refused vertex
+                std::ostringstream where;
+                where
+                    << "triangle " << t + 1 << " of " << nTriangles_
+                    << " (counted from 1), vertex " << k/3 + 1;
+                if (nonFinite)
+                {
+                    error_ = where.str()
+                      + " has a coordinate that is not a number (NaN) or is"
+                        " infinite; " + allowedCoordinates();
+                }
+                else
+                {
+                    refuseCoordinate(x, where.str());
+                }
                 return;
             }
         }
@@ -302,12 +299,9 @@ void Foam::STLcheck::checkAscii(const std::string& text)
                   + (vertex ? "; " + allowedCoordinates() : std::string());
                 return false;
             }
-            if
-            (
-                vertex
-             && !allowedCoordinate(x, "line " + std::to_string(line))
-            )
+            if (vertex && !allowedCoordinate(x))
             {
+                refuseCoordinate(x, "line " + std::to_string(line));
                 return false;
             }
         }

@@ -148,8 +148,7 @@ Foam::point Foam::barrierModel::readPoint
     const point p = dict.get<point>(key);
     for (direction d = 0; d < 3; ++d)
     {
-        // Finite first: a comparison with NaN would raise a signal
-        if (!(std::isfinite(p[d]) && mag(p[d]) <= STLcheck::maxCoordinate))
+        if (!STLcheck::allowedCoordinate(p[d]))
         {
             FatalIOErrorInFunction(dict)
                 << key << " = " << p << " is invalid; allowed: coordinates"
@@ -182,34 +181,53 @@ Foam::vector Foam::barrierModel::readDirection(const word& key) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::barrierModel::findContactNodes(const gridGeometry& g)
+void Foam::barrierModel::planeNormals(vectorField& normals)
+{
+    for (vector& n : normals)
+    {
+        n.y() = 0;
+        const scalar len = mag(n);
+        n = len > SMALL ? n/len : Zero;
+    }
+}
+
+
+void Foam::barrierModel::findContactNodes
+(
+    const gridGeometry& g,
+    const bool wall[3][2]
+)
 {
     checkGrid(g);
 
     // Nodes to a depth of three cells: the stencils of particles that touch
     // the surface, and of those that have entered it by up to a cell
-    const scalar h = max(max(g.dx[0], g.dx[1]), g.dx[2]);
+    // (Sizes along the axes the flow varies along: a plane slice's width
+    // across y is no resolution)
+    const scalar h = g.hMax();
     const scalar band = 3*h;
     const scalar onSurface = 1e-9*h;
     // A cell that holds a point of the barrier has every corner node within
     // a cell diagonal of it (margin: terrain's distance is approximate)
-    const scalar nearCellDistance = 1.25*std::sqrt
-    (
-        sqr(g.dx[0]) + sqr(g.dx[1]) + sqr(g.dx[2])
-    );
+    scalar diagonal2 = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        diagonal2 += g.varies(d) ? sqr(g.dx[d]) : 0;
+    }
+    const scalar nearCellDistance = 1.25*std::sqrt(diagonal2);
     nearCell_.assign(g.nCellsTotal(), 0);
     for (int d = 0; d < 3; ++d)
     {
         nearLo_[d] = g.nCells[d];
         nearHi_[d] = -1;
     }
-    guardDepth_ = guardDepthCells()*min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    guardDepth_ = guardDepthCells()*g.hMin();
     // The screen's clearance phi + guardDepth - margin; the margin covers
     // the rounding of the distances, which grows with the coordinates
     // (1e-10 m at 1e6 m). Nodes outside the searched box are farther than
     // the band from the barrier: the band bounds their distance from below
     const scalar clearance =
-        guardDepth_ - 1e-6*min(min(g.dx[0], g.dx[1]), g.dx[2]);
+        guardDepth_ - 1e-6*g.hMin();
     nodeClearance_.clear();
     if (exactDistance())
     {
@@ -269,6 +287,10 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         scalarField phi;
         vectorField nrm;
         distance(pointField(pts), phi, nrm);
+        if (g.plane)
+        {
+            planeNormals(nrm);
+        }
         forAll(pts, pi)
         {
             if (!nodeClearance_.empty())
@@ -319,6 +341,26 @@ void Foam::barrierModel::findContactNodes(const gridGeometry& g)
         }
     }
     normalForce_.assign(nodes_.size(), 0.0);
+    share_.assign(nodes_.size(), 1.0);
+    forAll(nodes_, c)
+    {
+        gridGeometry::index ijk[3];
+        g.nodeIJK(nodes_[c], ijk);
+        for (int d = 0; d < g.dim; ++d)
+        {
+            const gridGeometry::index side[2] = {0, g.nCells[d]};
+            for (int s = 0; s < 2; ++s)
+            {
+                if (!wall[d][s])
+                {
+                    continue;
+                }
+                const gridGeometry::index beyond =
+                    s ? ijk[d] - side[s] : side[s] - ijk[d];
+                share_[c] *= beyond > 0 ? 0 : (beyond == 0 ? 0.5 : 1);
+            }
+        }
+    }
 
     if (measuresOvertopping())
     {
@@ -372,7 +414,7 @@ void Foam::barrierModel::warnIfThin
     // stopped at the nodes (contact acts only on approach); the particles'
     // guard stops it, so the force there acts on the particles and is
     // missing from the node pressure
-    const double h = max(max(g.dx[0], g.dx[1]), g.dx[2]);
+    const double h = g.hMax();
     std::vector<gridGeometry::index> sorted(nodes_);
     std::vector<label> order(nodes_.size());
     std::iota(order.begin(), order.end(), 0);
@@ -457,6 +499,7 @@ void Foam::barrierModel::applyContact
     const double* ny = normal_[1].data();
     const double* nz = normal_[2].data();
     double* fn = normalForce_.data();
+    const double* share = share_.data();
     const contactType contact = contact_;
     const double mu = friction_;
     // Force summed in a fixed order: the same on any number of threads
@@ -476,9 +519,10 @@ void Foam::barrierModel::applyContact
         double vt[3] = {v[0], v[1], v[2]};
         contactVelocity(contact, mu, nrm, vn, vt);
         const double k = mi/dt;
-        S[0] += k*(v[0] - vt[0]);
-        S[1] += k*(v[1] - vt[1]);
-        S[2] += k*(v[2] - vt[2]);
+        const double kDomain = share[c]*k;
+        S[0] += kDomain*(v[0] - vt[0]);
+        S[1] += kDomain*(v[1] - vt[1]);
+        S[2] += kDomain*(v[2] - vt[2]);
         fn[c] = -k*vn;
         grid.vx[n] = vt[0];
         grid.vy[n] = vt[1];
@@ -727,6 +771,10 @@ Foam::label Foam::barrierModel::stopEntries
         scalarField phi;
         vectorField normal;
         distance(a, phi, normal);
+        if (g.plane)
+        {
+            planeNormals(normal);
+        }
         pointField onFace(nc);
         forAll(onFace, c)
         {

@@ -86,10 +86,10 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
             << why.c_str() << exit(FatalIOError);
     }
 
-    // Other formats: the points as read (their bits: a signalling NaN is
-    // not loaded)
+    // Other formats (STLcheck checked STL files): the points as read
+    // (their bits: a signalling NaN is not loaded)
     const pointField& pts = surface_->points();
-    forAll(pts, pointi)
+    for (label pointi = 0; !stl && pointi < pts.size(); ++pointi)
     {
         for (direction d = 0; d < 3; ++d)
         {
@@ -98,7 +98,7 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
             if
             (
                 ((bits >> 52) & 0x7ff) == 0x7ff
-             || std::abs(pts[pointi][d]) > STLcheck::maxCoordinate
+             || !STLcheck::allowedCoordinate(pts[pointi][d])
             )
             {
                 FatalIOErrorInFunction(dict_)
@@ -134,7 +134,7 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
 void Foam::barrierModels::triSurfaceBarrier::orient(const fileName& path)
 {
     const triSurface& surf = *surface_;
-    const word fix
+    const string fix
     (
         "reorient it, e.g. with OpenFOAM's surfaceOrient (surfaceOrient "
       + file_ + " \"(x y z)\" " + file_.lessExt() + "Oriented."
@@ -205,10 +205,7 @@ void Foam::barrierModels::triSurfaceBarrier::orient(const fileName& path)
         bool cavity = false;
         for (label outer = 0; outer < nParts && !cavity; ++outer)
         {
-            cavity =
-                volume6[outer] > 0
-             && box[outer].contains(box[parti].min())
-             && box[outer].contains(box[parti].max());
+            cavity = volume6[outer] > 0 && box[outer].contains(box[parti]);
         }
         flip[parti] = !cavity;
         nFlipped += !cavity;

@@ -10,6 +10,8 @@ License
 
 #include "speedLimit.H"
 #include "knownKeywords.H"
+#include "mpmTime.H"
+#include "OStringStream.H"
 
 #include <cmath>
 #include <cstdio>
@@ -74,25 +76,42 @@ void Foam::speedLimit::readState(const dictionary& state)
 }
 
 
+void Foam::speedLimit::blownUp
+(
+    const std::string& what,
+    const std::string& why,
+    const mpmTime& runTime
+)
+{
+    const word& last = runTime.lastComplete();
+    FatalErrorInFunction
+        << what.c_str() << " at time " << runTime.timeName() << " (deltaT "
+        << runTime.deltaTValue() << " s)" << why.c_str() << ": the state is"
+        << " taken as blown up; nothing written for it. Last good time"
+        << " directory: " << (last.empty() ? word("none") : last)
+        << exit(FatalError);
+}
+
+
 void Foam::speedLimit::check
 (
     const scalar speed,
     const char* what,
-    const Time& runTime,
-    const word& lastWritten
+    const mpmTime& runTime
 ) const
 {
     if (speed > limit_)
     {
-        FatalErrorInFunction
-            << what << " " << speed << " m/s at time "
-            << runTime.timeName() << " (deltaT " << runTime.deltaTValue()
-            << " s) exceeds speedLimit " << limit_ << " m/s ("
-            << (given_ ? "given" : "default: 10 x the speed scale of the start")
-            << "): the state is taken as blown up; nothing written for it."
-            << " Last good time directory: "
-            << (lastWritten.empty() ? word("none") : lastWritten)
-            << exit(FatalError);
+        OStringStream found, why;
+        found<< what << ' ' << speed << " m/s";
+        why << " exceeds speedLimit " << limit_ << " m/s ("
+            << (given_ ? "given" : "default: ") ;
+        if (!given_)
+        {
+            why << factor << " x the speed scale of the start";
+        }
+        why << ')';
+        blownUp(found.str(), why.str(), runTime);
     }
 }
 

@@ -38,9 +38,10 @@ void Foam::mpmGrid::notStructured(const string& why) const
 }
 
 
-bool Foam::mpmGrid::detect2D(const label nz) const
+void Foam::mpmGrid::detectEmpty(const label n[3])
 {
-    bool emptyZ = false;
+    // Axes with empty patches normal to them
+    bool empty[3] = {false, false, false};
     for (const polyPatch& pp : mesh_.boundaryMesh())
     {
         if (!isA<emptyPolyPatch>(pp) || pp.empty())
@@ -48,21 +49,35 @@ bool Foam::mpmGrid::detect2D(const label nz) const
             continue;
         }
         const vector n = pp.faceAreas()[0]/mag(pp.faceAreas()[0]);
-        if (mag(n.z()) < 1 - latticeTol)
+        const direction d = n.x()*n.x() > 0.5 ? 0 : (n.y()*n.y() > 0.5 ? 1 : 2);
+        if (mag(n[d]) < 1 - latticeTol || d == 0)
         {
             notStructured
             (
-                "empty patch " + pp.name() + " is not normal to z;"
-                " a 2D grid has its bed in the x-y plane"
+                "empty patch " + pp.name() + " is not normal to z (a 2D"
+                " grid, bed in the x-y plane) or to y (a plane slice in x-z)"
             );
         }
-        emptyZ = true;
+        empty[d] = true;
     }
-    if (emptyZ && nz != 1)
+    if (empty[1] && empty[2])
     {
-        notStructured("a 2D mesh (empty patches) must be one cell thick in z");
+        notStructured("empty patches normal to y and to z; allowed: one axis");
     }
-    return emptyZ;
+    for (const direction d : {1, 2})
+    {
+        if (empty[d] && n[d] != 1)
+        {
+            notStructured
+            (
+                word(d == 2 ? "a 2D mesh (empty patches normal to z) must be"
+                " one cell thick in z" : "a plane slice (empty patches normal"
+                " to y) must be one cell across y")
+            );
+        }
+    }
+    geom_.dim = empty[2] ? 2 : 3;
+    geom_.plane = empty[1];
 }
 
 
@@ -115,7 +130,7 @@ void Foam::mpmGrid::setGeometry()
         );
     }
 
-    geom_.dim = detect2D(n[2]) ? 2 : 3;
+    detectEmpty(n);
     geom_.finalise();
 }
 
@@ -228,7 +243,13 @@ Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
     {
         Info<< ' ' << geom_.dx[2];
     }
-    Info<< ") m, origin (" << geom_.origin[0] << ' ' << geom_.origin[1] << ' '
+    Info<< ") m";
+    if (geom_.plane)
+    {
+        Info<< ", a plane slice (empty patches normal to y): plane flow in"
+            << " x-z, " << geom_.dx[1] << " m across";
+    }
+    Info<< ", origin (" << geom_.origin[0] << ' ' << geom_.origin[1] << ' '
         << geom_.origin[2] << "), " << nNodes() << " nodes with ghosts"
         << endl;
 }

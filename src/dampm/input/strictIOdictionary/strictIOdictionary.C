@@ -88,8 +88,8 @@ void Foam::strictIOdictionary::checkLiteral
 (
     Istream& is,
     const fileName& dir,
-    const word& scope,
-    wordHashSet& keys,
+    const string& scope,
+    HashSet<string>& keys,
     bool& strict
 )
 {
@@ -108,7 +108,7 @@ void Foam::strictIOdictionary::checkLiteral
             }
             continue;
         }
-        const word key(t.isWord() ? t.wordToken() : word(t.stringToken()));
+        const string key(t.isWord() ? t.wordToken() : t.stringToken());
         if (key.starts_with("#include") || key == "#sinclude")
         {
             // The included file's entries belong to this scope
@@ -147,7 +147,8 @@ void Foam::strictIOdictionary::checkLiteral
             (
                 FUNCTION_NAME, __FILE__, __LINE__, is.name(), is.lineNumber()
             )   << "duplicate keyword \"" << key.c_str() << "\" in "
-                << (scope.empty() ? word("the top level") : scope) << " of "
+                << (scope.empty() ? string("the top level") : scope).c_str()
+                << " of "
                 << is.name() << ": each keyword may appear once in a"
                 << " dictionary (a second barrier or region of the same name"
                 << " would replace or merge into the first); allowed: distinct"
@@ -160,10 +161,10 @@ void Foam::strictIOdictionary::checkLiteral
         is.read(next);
         if (next == token::BEGIN_BLOCK)
         {
-            wordHashSet sub;
+            HashSet<string> sub;
             checkLiteral
             (
-                is, dir, scope.empty() ? key : word(scope + '.' + key), sub,
+                is, dir, scope.empty() ? key : string(scope + '.' + key), sub,
                 strict
             );
         }
@@ -188,9 +189,9 @@ void Foam::strictIOdictionary::read(Istream& is, dictionary& dict)
     // The keywords as written (not as merged): a $name's entries may be
     // overridden, a keyword written twice in one scope may not
     is.rewind();
-    wordHashSet keys;
+    HashSet<string> keys;
     bool strict = true;
-    checkLiteral(is, fileName(is.name()).path(), word::null, keys, strict);
+    checkLiteral(is, fileName(is.name()).path(), string(), keys, strict);
 }
 
 

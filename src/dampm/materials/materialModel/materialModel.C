@@ -78,8 +78,12 @@ Foam::scalar Foam::materialModel::readCoeffOrDefault
     const coeffRange& range
 ) const
 {
+    if (coeffs_.found(key))
+    {
+        return readCoeff(key, range);
+    }
     knownKeywords::add(coeffs_, {key});
-    return coeffs_.found(key) ? readCoeff(key, range) : deflt;
+    return deflt;
 }
 
 

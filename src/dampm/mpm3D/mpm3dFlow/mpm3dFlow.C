@@ -36,6 +36,51 @@ Foam::mpm3dFlow::overlapTypeNames
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+template<class Fn>
+void Foam::mpm3dFlow::visitKernel(Fn&& fn) const
+{
+    const bool plane = grid_.isPlane();
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            if (plane)
+            {
+                fn(planeKernel<std::decay_t<decltype(kernel)>>(kernel));
+            }
+            else
+            {
+                fn(kernel);
+            }
+        }
+    );
+}
+
+
+void Foam::mpm3dFlow::planeFlow()
+{
+    if (!grid_.isPlane())
+    {
+        return;
+    }
+    // gradU row-major: the y row (3, 4, 5) and the y column (1, 7); the
+    // shear stresses across (xy, yz)
+    double* const zeroed[] =
+    {
+        particles_.column(particleArrays::UY),
+        particles_.column(gradU_ + 1), particles_.column(gradU_ + 3),
+        particles_.column(gradU_ + 4), particles_.column(gradU_ + 5),
+        particles_.column(gradU_ + 7),
+        particles_.column(sigma_ + 1), particles_.column(sigma_ + 4)
+    };
+    for (double* c : zeroed)
+    {
+        std::fill(c, c + particles_.size(), 0.0);
+    }
+}
+
+
 Foam::mpm3DParticles Foam::mpm3dFlow::kernelView()
 {
     particleArrays& p = particles_;
@@ -94,7 +139,8 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
 {
     const gridGeometry& g = grid_.geometry();
     const label n = nPerCell_;
-    const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*n*n);
+    const label nAcross = perCell(1);
+    const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*nAcross*n);
     const scalar rho0 = material_->rho();
     const scalar gMag =
         mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
@@ -139,19 +185,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             barrierModel::readPoint(dict, "min"),
             barrierModel::readPoint(dict, "max")
         );
-        const vector U = dict.getOrDefault<vector>("U", Zero);
-        scalar speed = 0;
-        {
-            const fpTrapsHeld hold;
-            speed = mag(U);
-        }
-        if (!(speed <= speedLimit::maximum))
-        {
-            FatalIOErrorInFunction(dict)
-                << "U = " << U << " is invalid; allowed: |U| <= "
-                << speedLimit::maximum
-                << " m/s" << exit(FatalIOError);
-        }
+        const vector U = speedLimit::readVelocity(dict, vector::zero);
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
         const scalar zs =
             dict.getOrDefault<scalar>("freeSurface", box.max().z());
@@ -173,9 +207,9 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         for (label k = 0; k < g.nCells[2]*n; ++k)
         {
             const scalar z = g.origin[2] + (k + 0.5)*g.dx[2]/n;
-            for (label j = 0; j < g.nCells[1]*n; ++j)
+            for (label j = 0; j < g.nCells[1]*nAcross; ++j)
             {
-                const scalar y = g.origin[1] + (j + 0.5)*g.dx[1]/n;
+                const scalar y = g.origin[1] + (j + 0.5)*g.dx[1]/nAcross;
                 for (label i = 0; i < g.nCells[0]*n; ++i)
                 {
                     const point x
@@ -306,21 +340,10 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         }
 
         // What was kept, and what of the box lies outside the mesh
-        bool beyond = false;
-        scalar inside = 1;
-        for (direction d = 0; d < 3; ++d)
-        {
-            beyond =
-                beyond
-             || box.min()[d] < mesh.min()[d] || box.max()[d] > mesh.max()[d];
-            inside *= max
-            (
-                min(box.max()[d], mesh.max()[d])
-              - max(box.min()[d], mesh.min()[d]),
-                0.0
-            );
-        }
-        const scalar outside = beyond ? box.volume() - inside : 0;
+        boundBox kept(box);
+        const scalar inside = kept.intersect(mesh) ? kept.volume() : 0;
+        const scalar outside =
+            mesh.contains(box) ? 0 : box.volume() - inside;
         Info<< "Initial region " << e.keyword() << ": " << pts.size()
             << " particles" << (hydrostatic ? ", hydrostatic" : "")
             << ", kept " << mass << " kg";
@@ -492,11 +515,21 @@ Foam::mpm3dFlow::mpm3dFlow
     shape_ = shapeFunction::New(shapeDict, 0.5/nPerCell_);
     material_ = materialModel::New(dict);
 
+    if (grid.isPlane() && g.y() != 0)
+    {
+        FatalErrorInFunction
+            << "gravity " << g << " has a component across the plane slice"
+            << " (the mesh is one cell across y with empty patches);"
+            << " allowed: gravity in the x-z plane (see constant/g)"
+            << exit(FatalError);
+    }
+
     // Kernel settings
     for (int d = 0; d < 3; ++d)
     {
         settings_.g[d] = g[d];
     }
+    settings_.plane = grid.isPlane();
     settings_.rho0 = material_->rho();
     settings_.smoothJ = material_->volumetricSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
@@ -528,7 +561,7 @@ Foam::mpm3dFlow::mpm3dFlow
                 << exit(FatalIOError);
         }
         barriers_.append(barrierModel::New(e.keyword(), e.dict(), caseDir));
-        barriers_.last().findContactNodes(grid.geometry());
+        barriers_.last().findContactNodes(grid.geometry(), settings_.wall);
     }
 
     // Particle fields
@@ -572,6 +605,8 @@ Foam::mpm3dFlow::mpm3dFlow
         seed(dict.subDict("initialRegions"));
     }
 
+    planeFlow();
+
     scalar mMax = 0;
     const double* m = particles_.column(particleArrays::M);
     for (label i = 0; i < particles_.size(); ++i)
@@ -589,23 +624,28 @@ Foam::mpm3dFlow::mpm3dFlow
 Foam::scalar Foam::mpm3dFlow::speedScale() const
 {
     const gridGeometry& g = grid_.geometry();
-    const scalar gMag = std::sqrt
-    (
-        sqr(settings_.g[0]) + sqr(settings_.g[1]) + sqr(settings_.g[2])
-    );
-    double maxU2 = 0;
-    for (label i = 0; i < particles_.size(); ++i)
-    {
-        double u2 = 0;
-        for (int d = 0; d < 3; ++d)
-        {
-            u2 += sqr(particles_.column(particleArrays::UX + d)[i]);
-        }
-        maxU2 = max(maxU2, u2);
-    }
+    const scalar gMag =
+        mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
     return
-        material_->waveSpeed() + std::sqrt(maxU2)
+        material_->waveSpeed() + diagnostics().maxSpeed
       + std::sqrt(2*gMag*(g.upper(2) - g.origin[2]));
+}
+
+
+Foam::vector Foam::mpm3dFlow::particleSpacing() const
+{
+    const gridGeometry& g = grid_.geometry();
+    return vector
+    (
+        g.dx[0]/perCell(0), g.dx[1]/perCell(1), g.dx[2]/perCell(2)
+    );
+}
+
+
+Foam::scalar Foam::mpm3dFlow::width() const
+{
+    const gridGeometry& g = grid_.geometry();
+    return g.upper(1) - g.origin[1];
 }
 
 
@@ -651,7 +691,13 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
     os  << "mpm3dFoam: explicit 3D MPM, update stress last" << nl
         << "    grid: " << g.nCells[0] << " x " << g.nCells[1] << " x "
         << g.nCells[2] << " cells of " << g.dx[0] << " x " << g.dx[1]
-        << " x " << g.dx[2] << " m" << nl
+        << " x " << g.dx[2] << " m";
+    if (g.plane)
+    {
+        os  << ", a plane slice: plane flow in x-z, forces per unit width"
+            << " over its " << width() << " m across y";
+    }
+    os  << nl
         << "    particles: " << particles_.size() << " ("
         << nPerCell_ << " per cell and axis when seeded)" << nl
         << "    shape function: " << shape_->type() << nl
@@ -721,9 +767,8 @@ void Foam::mpm3dFlow::particlesToGrid()
     zeroNodes3D(g, activeNodes_, nodes_);
 
     const mpm3DParticles view = kernelView();
-    visitShape
+    visitKernel
     (
-        *shape_,
         [&](const auto& kernel)
         {
             if (settings_.smoothJ)
@@ -774,7 +819,7 @@ Foam::scalar Foam::mpm3dFlow::stableDeltaT
         const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
         maxU2 = u2 > maxU2 ? u2 : maxU2;
     }
-    const scalar h = min(min(g.dx[0], g.dx[1]), g.dx[2]);
+    const scalar h = g.hMin();
     scalar dt = maxCo*h/(material_->waveSpeed() + std::sqrt(maxU2));
     limit = "wave";
 
@@ -835,9 +880,8 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
             x0[d] = xo;
         }
     }
-    visitShape
+    visitKernel
     (
-        *shape_,
         [&](const auto& kernel)
         {
             gridToParticles3D
@@ -947,9 +991,8 @@ void Foam::mpm3dFlow::smoothPressure()
     const gridGeometry& g = grid_.geometry();
     const mpm3DParticles view = kernelView();
     const nodeBox box = particles_.stencilNodes(g);
-    visitShape
+    visitKernel
     (
-        *shape_,
         [&](const auto& kernel)
         {
             nodalPressure3D

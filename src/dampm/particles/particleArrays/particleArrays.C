@@ -286,8 +286,10 @@ void Foam::particleArrays::stencilRows
             const index k0 = g.dim == 3 ? clip(k - below, g.nNodesDir[2]) : 0;
             const index k1 =
                 g.dim == 3 ? clip(k + above + 1, g.nNodesDir[2]) : 1;
-            const index j0 = clip(j - below, g.nNodesDir[1]);
-            const index j1 = clip(j + above + 1, g.nNodesDir[1]);
+            // A plane slice's stencils take its one row of nodes along y
+            const index j0 = g.plane ? nG : clip(j - below, g.nNodesDir[1]);
+            const index j1 =
+                g.plane ? nG + 1 : clip(j + above + 1, g.nNodesDir[1]);
             for (index kk = k0; kk < k1; ++kk)
             {
                 for (index jj = j0; jj < j1; ++jj)

@@ -501,21 +501,21 @@ void Foam::particleCloudIO::checkCloud
 
     // Inside the grid (a 2D grid: its x-y extent)
     const gridGeometry& g = grid.geometry();
-    const int nDim = grid.is2D() ? 2 : 3;
-    for (int d = 0; d < nDim; ++d)
+    const double* x = particles.column(particleArrays::X);
+    const double* y = particles.column(particleArrays::Y);
+    const double* z = particles.column(particleArrays::Z);
+    for (label i = 0; i < particles.size(); ++i)
     {
-        const double* x = particles.column(particleArrays::X + d);
-        for (label i = 0; i < particles.size(); ++i)
+        if (!g.inside(x[i], y[i], z[i]))
         {
-            if (!(x[i] >= g.origin[d] && x[i] <= g.upper(d)))
-            {
-                FatalErrorInFunction
-                    << dir/"positions" << ": particle " << i << " lies"
-                    << " outside the mesh (" << "xyz"[d] << " = " << x[i]
-                    << "; allowed: " << g.origin[d] << " to " << g.upper(d)
-                    << " m). The cloud is corrupt or of another mesh"
-                    << exit(FatalError);
-            }
+            FatalErrorInFunction
+                << dir/"positions" << ": particle " << i << " lies outside"
+                << " the mesh at " << point(x[i], y[i], z[i]) << "; allowed:"
+                << " the mesh's box from "
+                << point(g.origin[0], g.origin[1], g.origin[2]) << " to "
+                << point(g.upper(0), g.upper(1), g.upper(2))
+                << (grid.is2D() ? " in x and y" : "") << " m. The cloud is"
+                << " corrupt or of another mesh" << exit(FatalError);
         }
     }
 

@@ -114,12 +114,13 @@ double Foam::particleMemory::seedsInBox
 )
 {
     // Per axis: the positions origin + (k + 1/2) s in [min, max], s the
-    // spacing, k from 0 to nCells nPerCell - 1
+    // spacing, k from 0 to nCells nPerCell - 1 (one across a plane slice)
     double n = 1;
     for (int d = 0; d < g.dim; ++d)
     {
-        const double s = g.dx[d]/nPerCell;
-        const double last = g.nCells[d]*nPerCell - 1;
+        const label perCell = g.varies(d) ? nPerCell : 1;
+        const double s = g.dx[d]/perCell;
+        const double last = g.nCells[d]*perCell - 1;
         const double lo =
             max(std::ceil((box.min()[d] - g.origin[d])/s - 0.5), 0.0);
         const double hi =

@@ -82,12 +82,7 @@ Foam::scalar Foam::releaseModels::rasterRelease::height
 
 Foam::boundBox Foam::releaseModels::rasterRelease::bounds() const
 {
-    const terrainRaster& r = *raster_;
-    return boundBox
-    (
-        point(r.x(0) - r.dx()/2, r.y(0) - r.dy()/2, 0),
-        point(r.x(r.nx() - 1) + r.dx()/2, r.y(r.ny() - 1) + r.dy()/2, 0)
-    );
+    return raster_->cellBounds();
 }
 
 

@@ -38,16 +38,9 @@ Foam::releaseModel::releaseModel
     dict_(dict),
     topography_(topography),
     caseDir_(caseDir),
-    U_(dict.getOrDefault<vector2D>("U", vector2D::zero))
+    U_(speedLimit::readVelocity(dict, vector2D::zero))
 {
     knownKeywords::add(dict, {"U"});
-    const scalar bound = speedLimit::maximum;
-    if (!(mag(U_.x()) <= bound && mag(U_.y()) <= bound && mag(U_) <= bound))
-    {
-        FatalIOErrorInFunction(dict)
-            << "U = " << U_ << " is invalid; allowed: |U| <= " << bound
-            << " m/s" << exit(FatalIOError);
-    }
 }
 
 

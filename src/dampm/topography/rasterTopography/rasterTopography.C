@@ -78,11 +78,9 @@ void Foam::topographyModels::rasterTopography::checkCovers
     // The raster's cells, local coordinates, and how far the mesh reaches
     // beyond them on each side (west, east, south, north)
     const terrainRaster& r = *raster_;
-    const scalar lo[2] = {r.x(0) - r.dx()/2, r.y(0) - r.dy()/2};
-    const scalar hi[2] =
-    {
-        r.x(r.nx() - 1) + r.dx()/2, r.y(r.ny() - 1) + r.dy()/2
-    };
+    const boundBox cells(r.cellBounds());
+    const scalar lo[2] = {cells.min().x(), cells.min().y()};
+    const scalar hi[2] = {cells.max().x(), cells.max().y()};
     const scalar beyond[4] =
     {
         lo[0] - g.origin[0], g.upper(0) - hi[0],

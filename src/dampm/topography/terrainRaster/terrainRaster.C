@@ -396,7 +396,7 @@ void Foam::terrainRaster::readAsc()
         pos = 0;
         while (nextWord(line, pos, b, e))
         {
-            double v;
+            double v = 0;
             const parsed kind = parseNumber(line, b, e, v);
             if (kind == parsed::notANumber)
             {
@@ -416,10 +416,12 @@ void Foam::terrainRaster::readAsc()
                     << " x " << ny_ << " = " << n << " values"
                     << exit(FatalIOError);
             }
-            const bool isNoData =
-                hasNoData
-             && (v == noData || (std::isnan(v) && std::isnan(noData)));
-            if (std::isnan(v) || isNoData)
+            // A value out of range is refused whatever v was left at
+            if
+            (
+                kind != parsed::outOfRange
+             && (std::isnan(v) || (hasNoData && v == noData))
+            )
             {
                 v = std::numeric_limits<double>::quiet_NaN();
             }
@@ -838,6 +840,16 @@ Foam::boundBox Foam::terrainRaster::bounds() const
     (
         point(x(0), y(0), minValue_),
         point(x(nx_ - 1), y(ny_ - 1), maxValue_)
+    );
+}
+
+
+Foam::boundBox Foam::terrainRaster::cellBounds() const
+{
+    return boundBox
+    (
+        point(x(0) - dx_/2, y(0) - dy_/2, 0),
+        point(x(nx_ - 1) + dx_/2, y(ny_ - 1) + dy_/2, 0)
     );
 }
 

@@ -1,0 +1,104 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "surfaceProbes.H"
+#include "knownKeywords.H"
+#include "vector2D.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::surfaceProbes::surfaceProbes
+(
+    const Time& runTime,
+    const dictionary& dict,
+    const gridGeometry& geom
+)
+:
+    geom_(geom)
+{
+    knownKeywords::add(dict, {"surfaceProbes"});
+    const dictionary& probes = dict.subOrEmptyDict("surfaceProbes");
+    for (const entry& e : probes)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(probes)
+                << "surfaceProbes entry " << e.keyword() << " is not a"
+                << " dictionary; allowed: name { location (x y); }"
+                << exit(FatalIOError);
+        }
+        knownKeywords::add(e.dict(), {"location"});
+        const vector2D loc = e.dict().get<vector2D>("location");
+        const bool inside =
+            loc.x() >= geom.origin[0] && loc.x() <= geom.upper(0)
+         && (geom.plane || (loc.y() >= geom.origin[1] && loc.y() <= geom.upper(1)));
+        if (!inside)
+        {
+            FatalIOErrorInFunction(e.dict())
+                << "location " << loc << " of surface probe " << e.keyword()
+                << " is outside the mesh; allowed: x in [" << geom.origin[0]
+                << ", " << geom.upper(0) << "], y in [" << geom.origin[1]
+                << ", " << geom.upper(1) << "]" << exit(FatalIOError);
+        }
+        locations_.append(loc);
+        files_.append
+        (
+            new timeSeriesFile
+            (
+                runTime, e.keyword(), "surfaceHeight",
+                {"time", "zTop", "nParticles"},
+                {
+                    "Top of the flow at (x y) = (" + Foam::name(loc.x()) + " "
+                  + Foam::name(loc.y()) + ") [m]: the highest particle within"
+                    " half a cell horizontally (zTop, the mesh bottom when"
+                    " none is near), and how many are near"
+                }
+            )
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::surfaceProbes::write
+(
+    const scalar t,
+    const particleArrays& particles
+)
+{
+    const label n = particles.size();
+    const double* x = particles.column(particleArrays::X);
+    const double* y = particles.column(particleArrays::Y);
+    const double* z = particles.column(particleArrays::Z);
+    const double rx = 0.5*geom_.dx[0];
+    // Across a plane slice every particle is near
+    const double ry = geom_.plane ? 1e300 : 0.5*geom_.dx[1];
+    forAll(locations_, p)
+    {
+        const double px = locations_[p].x(), py = locations_[p].y();
+        double top = geom_.origin[2];
+        label near = 0;
+        #pragma omp parallel for schedule(static) reduction(max:top) \
+            reduction(+:near)
+        for (label i = 0; i < n; ++i)
+        {
+            if (std::abs(x[i] - px) <= rx && std::abs(y[i] - py) <= ry)
+            {
+                ++near;
+                top = z[i] > top ? z[i] : top;
+            }
+        }
+        files_[p].write(List<scalar>({t, top, scalar(near)}));
+    }
+}
+
+
+// ************************************************************************* //
