@@ -74,6 +74,7 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
 
         #include "setMPMDeltaT.H"
+        #include "limitWriteDeltaT.H"
         #include "limitHandOffDeltaT.H"
 
         ++runTime;
