@@ -406,6 +406,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
     splitHMinGiven_(dict.found("splitHMin")),
+    releaseThickness_(0),
     releaseProjection_(dict.getOrDefault<bool>("releaseProjection", true)),
     speedLimit_(dict),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
@@ -558,6 +559,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
         mMax = max(mMax, particles_.column(particleArrays::M)[i]);
     }
     massTol_ = 1e-12*mMax;
+    releaseThickness_ = speedLimit::threeDigits(maxColumnThickness());
     if (!splitHMinGiven_)
     {
         splitHMin_ =
@@ -647,6 +649,7 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
     state.set("splitHMin", splitHMin_);
+    state.set("releaseThickness", releaseThickness_);
     speedLimit_.writeState(state);
     if (rheology_->defaultShearModulus())
     {
@@ -664,6 +667,8 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
     {
         splitHMin_ = state.get<scalar>("splitHMin");
     }
+    // A state written before it was kept: the restart's thickest column
+    state.readIfPresent("releaseThickness", releaseThickness_);
     speedLimit_.readState(state);
     if (rheology_->defaultShearModulus())
     {
