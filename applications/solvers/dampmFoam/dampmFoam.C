@@ -74,6 +74,7 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
 
         #include "setMPMDeltaT.H"
+        #include "limitWriteDeltaT.H"
         #include "limitHandOffDeltaT.H"
 
         ++runTime;
@@ -100,10 +101,12 @@ int main(int argc, char *argv[])
             )
         )
         {
-            Info<< nl << "Hand-off to the 3D stage at t = "
-                << runTime.timeName() << " s: " << handOff3D.reason().c_str()
-                << nl << endl;
+            // Written first: the log names the triggering column by its
+            // index in the cloud written
             #include "writeFields.H"
+            Info<< nl << "Hand-off to the 3D stage at t = "
+                << runTime.timeName() << " s: "
+                << handOff3D.reason(flow.particles()).c_str() << nl << endl;
             timers.run(stepTimers::IO, [&]{ runTime.writeAndEnd(); });
         }
         else if (runTime.writeTime())
@@ -113,7 +116,7 @@ int main(int argc, char *argv[])
         }
     }
 
-    if (handOff3D.reason().empty())
+    if (!handOff3D.ended())
     {
         handOff3D.reportNotDue(Info);
     }

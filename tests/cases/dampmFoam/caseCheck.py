@@ -25,8 +25,8 @@ def near(value, expected, tol, what, relative=False):
           % (what, value, expected, "relative" if relative else "absolute", err, tol))
 
 
-def summary(case="."):
-    return dp.read_dat(os.path.join(case, "postProcessing", "dampmFoam", "0", "summary.dat"))
+def summary(case=".", start="0"):
+    return dp.read_dat(os.path.join(case, "postProcessing", "dampmFoam", start, "summary.dat"))
 
 
 def cloud(case, time, name):

@@ -117,14 +117,18 @@ std::string ascii(const triangleList& tris, const bool end = true)
 }
 
 
-//- Write the bytes to a test file and check it
+//- Write the bytes to a test file and check it. One file per process: CTest
+//  runs the tests of this suite in parallel (Alltest: -j 2), and a shared
+//  file was read while another test rewrote it
 STLcheck checked(const std::string& bytes)
 {
     const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"STLcheck");
     mkDir(dir);
-    const fileName path(dir/"surface.stl");
+    const fileName path(dir/("surface" + Foam::name(pid()) + ".stl"));
     std::ofstream(path, std::ios::binary) << bytes;
-    return STLcheck(path);
+    const STLcheck result(path);
+    rm(path);
+    return result;
 }
 
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mpmTime.H"
+#include <cmath>
 #include "argList.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
@@ -455,6 +456,27 @@ Foam::Time& Foam::mpmTime::operator++()
         stopAt(stopAtControls::saWriteNow);
     }
     return Time::operator++();
+}
+
+
+void Foam::mpmTime::limitDeltaT(const scalar dtMax)
+{
+    if (!(deltaT_ > dtMax))
+    {
+        return;
+    }
+    scalar dt = dtMax;
+    if (writeControl_ == wcAdjustableRunTime)
+    {
+        // As Time::adjustDeltaT, with the number of steps rounded up
+        const scalar left =
+            (writeTimeIndex_ + 1)*writeInterval_ - (value() - startTime_);
+        if (left > 0)
+        {
+            dt = min(left/std::ceil(left/dtMax), dtMax);
+        }
+    }
+    setDeltaT(dt, false);
 }
 
 

@@ -129,13 +129,17 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
     const label n = nPerCell_;
     const scalar cellArea = g.dx[0]*g.dx[1]/(n*n);
 
-    // Checked by the release, which logs what it puts in and leaves out
+    // Checked by the release, which logs what it puts in and leaves out;
+    // the count refused before anything else is made for it
     std::vector<double> x, y, h;
     release.sampleColumns(g, n, rho_, x, y, h);
-    particleMemory::reserve
-    (
-        particles_, x.size(), "the release (constant/dampmProperties)", g, n
-    );
+    const std::string what("the release (constant/dampmProperties)");
+    particleMemory::reserve(particles_, x.size(), what, g, n);
+    if (releaseProjection_)
+    {
+        projectRelease(x, y, h);
+        particleMemory::reserve(particles_, x.size(), what, g, n);
+    }
 
     const label first = particles_.append(label(x.size()));
     for (size_t k = 0; k < x.size(); ++k)
@@ -152,6 +156,51 @@ void Foam::depthAveragedFlow::seed(const releaseModel& release)
         particles_.column(F_)[i] = g.dx[0]/n;
         particles_.column(F_ + 3)[i] = g.dx[1]/n;
     }
+}
+
+
+void Foam::depthAveragedFlow::projectRelease
+(
+    std::vector<double>& x,
+    std::vector<double>& y,
+    std::vector<double>& h
+) const
+{
+    const gridGeometry& g = grid_.geometry();
+    const scalar a = seedArea();
+    const auto volume = [&]()
+    {
+        double v = 0;
+        for (const double hk : h)
+        {
+            v += hk*a;
+        }
+        return v;
+    };
+    const double before = volume();
+    const size_t nSampled = x.size();
+    double moved = 0;
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            moved = Foam::projectRelease
+            (
+                g, kernel, nPerCell_, nodes_.area.data(), hMin_, x, y, h
+            );
+        }
+    );
+    const double after = volume();
+    Info<< "Release projected onto the grid (releaseProjection): "
+        << x.size() << " columns (" << nSampled << " sampled), " << after
+        << " m^3, relative change " << (after - before)/before;
+    if (moved > 0)
+    {
+        Info<< "; " << moved << " m^3 of the smeared edge, thinner than hMin "
+            << hMin_ << " m, moved to the nearest column";
+    }
+    Info<< endl;
 }
 
 
@@ -357,6 +406,8 @@ Foam::depthAveragedFlow::depthAveragedFlow
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
     splitHMinGiven_(dict.found("splitHMin")),
+    releaseThickness_(0),
+    releaseProjection_(dict.getOrDefault<bool>("releaseProjection", true)),
     speedLimit_(dict),
     slopeCorrection_(dict.getOrDefault<bool>("slopeCorrection", true)),
     pressureForm_
@@ -380,7 +431,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
         dict,
         {
             "rho", "particlesPerCell", "hMin", "splitRatio", "splitHMin",
-            "slopeCorrection", "pressureForm", "release"
+            "releaseProjection", "slopeCorrection", "pressureForm", "release"
         }
     );
     if (!grid.is2D())
@@ -508,6 +559,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
         mMax = max(mMax, particles_.column(particleArrays::M)[i]);
     }
     massTol_ = 1e-12*mMax;
+    releaseThickness_ = speedLimit::threeDigits(maxColumnThickness());
     if (!splitHMinGiven_)
     {
         splitHMin_ =
@@ -597,6 +649,7 @@ void Foam::depthAveragedFlow::writeState(dictionary& state) const
     state.set("outflowMass", outflowMass_);
     state.set("massTolerance", massTol_);
     state.set("splitHMin", splitHMin_);
+    state.set("releaseThickness", releaseThickness_);
     speedLimit_.writeState(state);
     if (rheology_->defaultShearModulus())
     {
@@ -614,6 +667,8 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
     {
         splitHMin_ = state.get<scalar>("splitHMin");
     }
+    // A state written before it was kept: the restart's thickest column
+    state.readIfPresent("releaseThickness", releaseThickness_);
     speedLimit_.readState(state);
     if (rheology_->defaultShearModulus())
     {

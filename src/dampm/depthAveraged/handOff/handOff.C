@@ -14,6 +14,11 @@ License
 #include "OSspecific.H"
 #include "strictIOdictionary.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::handOff::frontDepthFraction = 1e-3;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::handOff::readRegion
@@ -60,13 +65,16 @@ Foam::handOff::handOff
 (
     const dictionary& dampmProperties,
     const fileName& caseDir,
-    const scalar hMin
+    const scalar releaseThickness
 )
 :
     trigger_(triggerType::none),
     time_(GREAT),
     distance_(0),
-    frontHeight_(hMin),
+    frontDepth_(frontDepthFraction*releaseThickness),
+    frontDepthGiven_(false),
+    trigger3D_(point::zero),
+    triggerDepth_(0),
     searchBox_(boundBox::invertedBox),
     nearest_(GREAT)
 {
@@ -76,10 +84,29 @@ Foam::handOff::handOff
         return;
     }
     const dictionary& dict = dampmProperties.subDict("handOff");
+    if (dict.found("frontHeight"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "frontHeight is no longer read: use frontDepth (the depth [m]"
+            << " from which a column counts as the front; default "
+            << frontDepthFraction*100 << " % of the thickest released"
+            << " column)" << exit(FatalIOError);
+    }
     knownKeywords::add
     (
-        dict, {"time", "region", "regionCase", "distance", "frontHeight"}
+        dict, {"time", "region", "regionCase", "distance", "frontDepth"}
     );
+    frontDepthGiven_ = dict.found("frontDepth");
+    if (frontDepthGiven_)
+    {
+        frontDepth_ = dict.get<scalar>("frontDepth");
+        if (!(frontDepth_ > 0 && frontDepth_ < 1e6))
+        {
+            FatalIOErrorInFunction(dict)
+                << "frontDepth = " << frontDepth_ << " is invalid; allowed:"
+                << " 0 < frontDepth < 1e6 [m]" << exit(FatalIOError);
+        }
+    }
     const label nWays =
         label(dict.found("time")) + label(dict.found("region"))
       + label(dict.found("regionCase"));
@@ -140,18 +167,11 @@ Foam::handOff::handOff
     }
 
     distance_ = dict.get<scalar>("distance");
-    frontHeight_ = dict.getOrDefault<scalar>("frontHeight", hMin);
     if (!(distance_ >= 0))
     {
         FatalIOErrorInFunction(dict)
             << "distance = " << distance_ << " is invalid; allowed: >= 0 [m]"
             << exit(FatalIOError);
-    }
-    if (!(frontHeight_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "frontHeight = " << frontHeight_ << " is invalid; allowed:"
-            << " > 0 [m]" << exit(FatalIOError);
     }
 
     for (const barrierModel& b : region_)
@@ -204,22 +224,24 @@ bool Foam::handOff::due
         return false;
     }
 
-    // Front columns in the search box: their bed points
+    // Front columns in the search box: their bed points and depths
     const double* x = columns.column(particleArrays::X);
     const double* y = columns.column(particleArrays::Y);
     const double* h = columns.column(hField);
     const boundBox& sb = searchBox_;
     DynamicList<point> bed;
+    DynamicList<scalar> depth;
     for (label i = 0; i < columns.size(); ++i)
     {
         if
         (
-            h[i] >= frontHeight_
+            h[i] >= frontDepth_
          && x[i] >= sb.min().x() && x[i] <= sb.max().x()
          && y[i] >= sb.min().y() && y[i] <= sb.max().y()
         )
         {
             bed.append(point(x[i], y[i], Z.Z(x[i], y[i])));
+            depth.append(h[i]);
         }
     }
     if (bed.empty())
@@ -251,14 +273,40 @@ bool Foam::handOff::due
         return false;
     }
 
+    trigger3D_ = pts[nearestPoint];
+    triggerDepth_ = depth[nearestPoint];
     OStringStream os;
-    os  << "the front (a column at least " << frontHeight_ << " m deep, at ("
-        << pts[nearestPoint].x() << ' ' << pts[nearestPoint].y()
-        << ")) is " << max(nearest, 0.0) << " m from "
-        << region_[nearestBody].name() << " of the 3D region (hand-off"
-        << " distance " << distance_ << " m)";
+    os  << max(nearest, 0.0) << " m from " << region_[nearestBody].name()
+        << " of the 3D region (hand-off distance " << distance_ << " m)";
     reason_ = os.str();
     return true;
+}
+
+
+Foam::string Foam::handOff::reason(const particleArrays& columns) const
+{
+    if (trigger_ != triggerType::region || reason_.empty())
+    {
+        return reason_;
+    }
+    // The column is found by its position: the write may have re-sorted
+    // the columns since due() (positions do not change)
+    const double* x = columns.column(particleArrays::X);
+    const double* y = columns.column(particleArrays::Y);
+    label index = -1;
+    for (label i = 0; i < columns.size() && index < 0; ++i)
+    {
+        if (x[i] == trigger3D_.x() && y[i] == trigger3D_.y())
+        {
+            index = i;
+        }
+    }
+    OStringStream os;
+    os  << "the front, column " << index << " of the cloud at (x y) = ("
+        << trigger3D_.x() << ' ' << trigger3D_.y() << "), " << triggerDepth_
+        << " m deep (frontDepth " << frontDepth_ << " m), is "
+        << reason_.c_str();
+    return os.str();
 }
 
 
@@ -275,8 +323,14 @@ void Foam::handOff::describe(Ostream& os) const
         os  << "at t = " << time_ << " s" << nl;
         return;
     }
-    os  << "when the front (columns at least " << frontHeight_
-        << " m deep) comes within " << distance_ << " m of the 3D region ("
+    os  << "when the front (columns at least frontDepth = " << frontDepth_
+        << " m deep";
+    if (!frontDepthGiven_)
+    {
+        os  << ", the default: " << 100*frontDepthFraction
+            << " % of the thickest released column";
+    }
+    os  << ") comes within " << distance_ << " m of the 3D region ("
         << regionSource_ << ":";
     for (const barrierModel& b : region_)
     {
