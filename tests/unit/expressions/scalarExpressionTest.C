@@ -9,10 +9,11 @@ License
 Description
     Expressions: precedence and associativity, every function against the
     C++ standard library, the ternary of a piecewise slope, a hemispherical
-    mound, the order of the variables, parse errors that point at the
-    error, constants folded to NaN and inf under the solvers' floating-point
-    traps, and OpenMP evaluation that agrees with serial evaluation bit for
-    bit. Prints the evaluations per second of the hemisphere.
+    mound, the order of the variables, exact derivatives (every function
+    against its closed-form derivative, one side at kinks), parse errors
+    that point at the error, constants folded to NaN and inf under the
+    solvers' floating-point traps, and OpenMP evaluation that agrees with
+    serial evaluation bit for bit. Prints the evaluations per second of the hemisphere.
 
 \*---------------------------------------------------------------------------*/
 
@@ -70,7 +71,124 @@ std::string dictError(const std::string& expr)
     );
 }
 
+//- The value and the derivative along variable var of expr(x, y)
+std::pair<double, double> derivative
+(
+    const std::string& expr,
+    const double x,
+    const double y,
+    const label var
+)
+{
+    const double xy[2] = {x, y};
+    double d = 0;
+    const double v =
+        scalarExpression(expr, {"x", "y"}, "test").value(xy, var, d);
+    return {v, d};
+}
+
 } // End anonymous namespace
+
+
+TEST(scalarExpression, DerivativesMatchTheClosedForms)
+{
+    // f(a) and f'(a) of every function of one argument, at x = a and,
+    // through 2 y - 1, along y (the chain rule)
+    using fn1 = std::function<double(double)>;
+    const std::vector<std::pair<std::string, fn1>> unary =
+    {
+        {"sqrt", [](double a){ return 0.5/std::sqrt(a); }},
+        {"exp", [](double a){ return std::exp(a); }},
+        {"log", [](double a){ return 1/a; }},
+        {"log10", [](double a){ return 1/(a*std::log(10.0)); }},
+        {"sin", [](double a){ return std::cos(a); }},
+        {"cos", [](double a){ return -std::sin(a); }},
+        {"tan", [](double a){ return 1/(std::cos(a)*std::cos(a)); }},
+        {"asin", [](double a){ return 1/std::sqrt(1 - a*a); }},
+        {"acos", [](double a){ return -1/std::sqrt(1 - a*a); }},
+        {"atan", [](double a){ return 1/(1 + a*a); }},
+        {"sinh", [](double a){ return std::cosh(a); }},
+        {"cosh", [](double a){ return std::sinh(a); }},
+        {"tanh", [](double a){ return 1 - std::tanh(a)*std::tanh(a); }},
+        {"abs", [](double a){ return a > 0 ? 1.0 : -1.0; }},
+        {"floor", [](double){ return 0.0; }},
+        {"ceil", [](double){ return 0.0; }},
+        {"deg2rad", [](double){ return M_PI/180; }},
+        {"rad2deg", [](double){ return 180/M_PI; }},
+        {"sign", [](double){ return 0.0; }}
+    };
+    for (const auto& f : unary)
+    {
+        for (const double a : {0.3, 0.7, -0.45, 1.7, 12.5})
+        {
+            if (!std::isfinite(eval(f.first + "(x)", a)))
+            {
+                continue;
+            }
+            const std::string expr = f.first + "(x)";
+            const auto vd = derivative(expr, a, 0, 0);
+            EXPECT_EQ(vd.first, eval(expr, a)) << expr << " at " << a;
+            const double exact = f.second(a);
+            EXPECT_NEAR(vd.second, exact, 1e-14*(1 + std::abs(exact)))
+                << expr << "' at " << a;
+            const std::string chain = f.first + "(2*y - 1)";
+            const double ref = 2*f.second(a);
+            EXPECT_NEAR
+            (
+                derivative(chain, 0, (a + 1)/2, 1).second,
+                ref,
+                1e-14*(1 + std::abs(ref))
+            )   << chain << "' at y = " << (a + 1)/2;
+            EXPECT_EQ(derivative(expr, a, 0, 1).second, 0)
+                << expr << " does not depend on y";
+        }
+    }
+
+    // Functions of two arguments and the operators: d/dx and d/dy
+    struct case2
+    {
+        std::string expr;
+        double x, y, dx, dy;
+    };
+    const double x = 1.3, y = 0.6;
+    const double h = std::hypot(x, y);
+    const std::vector<case2> binary =
+    {
+        {"x + y", x, y, 1, 1},
+        {"x - 3*y", x, y, 1, -3},
+        {"x*y", x, y, y, x},
+        {"x/y", x, y, 1/y, -x/(y*y)},
+        {"x^y", x, y, y*std::pow(x, y - 1), std::pow(x, y)*std::log(x)},
+        {"x^2", x, y, 2*x, 0},
+        {"pow(-x, 3)", x, y, -3*x*x, 0},
+        {"atan2(y, x)", x, y, -y/(h*h), x/(h*h)},
+        {"hypot(x, y)", x, y, x/h, y/h},
+        {"min(x, y)", x, y, 0, 1},
+        {"max(x, y)", x, y, 1, 0},
+        {"-x + !y", x, y, -1, 0},
+        {"x < y || x > 2*y", x, y, 0, 0},
+        // The slidingToWall ground: the taken branch, also at the kink
+        {"x <= 10 ? 10 - x/3 : 10 - 10/3", 3, y, -1.0/3, 0},
+        {"x <= 10 ? 10 - x/3 : 10 - 10/3", 10, y, -1.0/3, 0},
+        {"x <= 10 ? 10 - x/3 : 10 - 10/3", 10.5, y, 0, 0},
+        // A hemisphere of radius 5: -(x - 25)/h on it, 0 outside and on
+        // the rim (sqrt at 0)
+        {hemisphere, 28, 25, -3.0/4, 0},
+        {hemisphere, 27, 26, -2/(2*std::sqrt(5.0)), -1/(2*std::sqrt(5.0))},
+        {hemisphere, 30, 25, 0, 0},
+        {hemisphere, 40, 25, 0, 0}
+    };
+    for (const case2& c : binary)
+    {
+        const auto dX = derivative(c.expr, c.x, c.y, 0);
+        const auto dY = derivative(c.expr, c.x, c.y, 1);
+        EXPECT_EQ(dX.first, eval(c.expr, c.x, c.y)) << c.expr;
+        EXPECT_NEAR(dX.second, c.dx, 1e-14*(1 + std::abs(c.dx)))
+            << "d/dx " << c.expr << " at (" << c.x << " " << c.y << ")";
+        EXPECT_NEAR(dY.second, c.dy, 1e-14*(1 + std::abs(c.dy)))
+            << "d/dy " << c.expr << " at (" << c.x << " " << c.y << ")";
+    }
+}
 
 
 TEST(scalarExpression, PrecedenceAndAssociativityFollowC)

@@ -79,7 +79,7 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
     spanning.dx[2] = 20;
     std::vector<double> Znodes(g.nNodes());
     topo->sampleNodes(spanning, Znodes.data());
-    hazardMaps maps(grid, *topo, Znodes.data());
+    hazardMaps maps(grid, *topo);
 
     // Two steps of a made-up node state: the maps keep the maxima
     shallowGrid nodes;

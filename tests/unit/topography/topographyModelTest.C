@@ -13,7 +13,10 @@ Description
     must cover the grid to half a raster cell; on a 2D grid the terrain must
     lie within the mesh's z-range, and the default flat bed says it is the
     default; a 3D grid leaves that to the terrain barrier; meshRange finds
-    the lowest and highest node of the mesh, ghosts excluded.
+    the lowest and highest node of the mesh, ghosts excluded; every model's
+    gradient is exact (flat, an expression against its closed form, a
+    raster's bilinear interpolant of a plane), and sampleGradient lays it
+    out at the nodes as sampleNodes does Z.
 
 \*---------------------------------------------------------------------------*/
 
@@ -200,6 +203,98 @@ TEST(topographyModel, RasterMustCoverTheGridToHalfARasterCell)
         " take half a raster cell (1 x 1 m)"), std::string::npos) << msg;
     EXPECT_NE(msg.find("file: constant/dampmProperties.rasterCoeffs"),
         std::string::npos) << msg;
+}
+
+
+TEST(topographyModel, GradientIsExactForEachModel)
+{
+    const solverFpTraps traps;
+    const fileName caseDir(DAMPM_TEST_MESHES);
+
+    // Flat
+    dictionary flat;
+    flat.add("topography", word("flat"));
+    const autoPtr<topographyModel> Zflat =
+        topographyModel::New(flat, caseDir);
+    EXPECT_EQ(Zflat->gradient(3.7, -2.1), vector2D::zero);
+
+    // An expression: a tilted plane with a ridge along x
+    const autoPtr<topographyModel> Zexpr = topographyModel::New
+    (
+        expressionDict("2 + 0.3*x - 0.1*y + 0.5*sin(0.7*x)*cos(0.2*y)"),
+        caseDir
+    );
+    const vector2D points[] =
+        {vector2D(0, 0), vector2D(3.3, 7.1), vector2D(17, 2)};
+    for (const vector2D& p : points)
+    {
+        const double x = p.x(), y = p.y();
+        const vector2D exact
+        (
+            0.3 + 0.35*std::cos(0.7*x)*std::cos(0.2*y),
+            -0.1 - 0.1*std::sin(0.7*x)*std::sin(0.2*y)
+        );
+        const vector2D grad = Zexpr->gradient(x, y);
+        EXPECT_NEAR(grad.x(), exact.x(), 1e-15) << p.x() << ' ' << p.y();
+        EXPECT_NEAR(grad.y(), exact.y(), 1e-15) << p.x() << ' ' << p.y();
+    }
+
+    // A raster of the plane Z = 1 + 0.5 x + 0.25 y (local; 2 m cells from
+    // map (1000 5000)): its bilinear interpolant is the plane inside, and
+    // constant across the edge outside it
+    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"topographyModel");
+    mkDir(dir);
+    {
+        std::ofstream os(dir/"plane.asc");
+        os  << "ncols 8\nnrows 6\nxllcorner 1000\nyllcorner 5000\n"
+            << "cellsize 2\n";
+        os.precision(17);
+        for (int j = 5; j >= 0; --j)
+        {
+            for (int i = 0; i < 8; ++i)
+            {
+                os  << (i ? " " : "") << 1 + 0.5*(2*i + 1) + 0.25*(2*j + 1);
+            }
+            os  << '\n';
+        }
+    }
+    dictionary coeffs;
+    coeffs.add("file", dir/"plane.asc");
+    dictionary raster;
+    raster.add("topography", word("raster"));
+    raster.add("rasterCoeffs", coeffs);
+    const autoPtr<topographyModel> Zraster =
+        topographyModel::New(raster, caseDir);
+    const vector2D inside[] =
+        {vector2D(3.3, 7.1), vector2D(9, 4), vector2D(1, 1)};
+    for (const vector2D& p : inside)
+    {
+        const vector2D grad = Zraster->gradient(p.x(), p.y());
+        EXPECT_NEAR(grad.x(), 0.5, 1e-12) << p.x() << ' ' << p.y();
+        EXPECT_NEAR(grad.y(), 0.25, 1e-12) << p.x() << ' ' << p.y();
+    }
+    EXPECT_NEAR(Zraster->gradient(0.5, 5).x(), 0, 1e-15)
+        << "west of the first sample, Z is constant across the edge";
+    EXPECT_NEAR(Zraster->gradient(0.5, 5).y(), 0.25, 1e-12);
+
+    // At the nodes, as sampleNodes lays out Z
+    const gridGeometry g(grid());
+    std::vector<double> gx(g.nNodes()), gy(g.nNodes());
+    Zexpr->sampleGradient(g, gx.data(), gy.data());
+    const gridGeometry::index nG = gridGeometry::nGhost;
+    for (label j = 0; j < g.nNodesDir[1]; ++j)
+    {
+        for (label i = 0; i < g.nNodesDir[0]; ++i)
+        {
+            const label n = i + j*g.nodeStride[1];
+            const vector2D grad = Zexpr->gradient
+            (
+                g.nodeCoord(0, i - nG), g.nodeCoord(1, j - nG)
+            );
+            ASSERT_EQ(gx[n], grad.x()) << "node " << n;
+            ASSERT_EQ(gy[n], grad.y()) << "node " << n;
+        }
+    }
 }
 
 

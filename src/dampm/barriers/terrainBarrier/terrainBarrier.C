@@ -63,11 +63,10 @@ inline Foam::scalar Foam::barrierModels::terrainBarrier::surface
     scalar& Zy
 ) const
 {
-    const scalar delta = 0.005;
-    const topographyModel& Z = *topography_;
-    Zx = (Z.Z(x + delta, y) - Z.Z(x - delta, y))/(2*delta);
-    Zy = (Z.Z(x, y + delta) - Z.Z(x, y - delta))/(2*delta);
-    return Z.Z(x, y);
+    const vector2D gradZ = topography_->gradient(x, y);
+    Zx = gradZ.x();
+    Zy = gradZ.y();
+    return topography_->Z(x, y);
 }
 
 

@@ -96,21 +96,6 @@ void Foam::columnsTo3D::profileFactors
 }
 
 
-Foam::vector2D Foam::columnsTo3D::groundGradient
-(
-    const scalar x,
-    const scalar y
-) const
-{
-    const scalar d = 1e-3*min(spacing_.x(), spacing_.y());
-    return vector2D
-    (
-        (ground_(x + d, y) - ground_(x - d, y))/(2*d),
-        (ground_(x, y + d) - ground_(x, y - d))/(2*d)
-    );
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::columnsTo3D::columnsTo3D
@@ -226,7 +211,8 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
                 col.at(corner & 1 ? col.na - 1 : 0, corner & 2 ? col.nb - 1 : 0,
                     px, py);
                 clampInside(px, py);
-                const double G = ground_(px, py);
+                vector2D gradG;
+                const double G = ground_(px, py, gradG);
                 zBed = Foam::min(zBed, G);
                 zTop = Foam::max(zTop, G + col.h);
             }
@@ -287,15 +273,15 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
                     double px, py;
                     col.at(ia, jb, px, py);
                     clampInside(px, py);
-                    const vector2D gradG = groundGradient(px, py);
+                    vector2D gradG;
+                    const scalar G = ground_(px, py, gradG);
                     const scalar u = f[k]*cu[c], v = f[k]*cv[c];
                     const scalar wBed = u*gradG.x() + v*gradG.y();
                     const scalar w = wBed - zeta*col.h*divU;
 
                     particles3D.column(particleArrays::X)[i] = px;
                     particles3D.column(particleArrays::Y)[i] = py;
-                    particles3D.column(particleArrays::Z)[i] =
-                        ground_(px, py) + zeta*col.h;
+                    particles3D.column(particleArrays::Z)[i] = G + zeta*col.h;
                     particles3D.column(particleArrays::UX)[i] = u;
                     particles3D.column(particleArrays::UY)[i] = v;
                     particles3D.column(particleArrays::UZ)[i] = w;

@@ -176,7 +176,8 @@ private:
         }
         if (folds)
         {
-            const scalar result = run(&code_[end - nIn], nIn + 1, nullptr);
+            const scalar result =
+                run<scalar>(&code_[end - nIn], nIn + 1, nullptr);
             code_.resize(end - nIn);
             code_.push_back({opConst, onStack, 0, result});
         }
@@ -401,16 +402,168 @@ public:
 };
 
 
+// * * * * * * * * * * * * * * * Dual numbers  * * * * * * * * * * * * * * //
+
+// v + d eps with eps^2 = 0: run on these carries the derivative along
+// with the value, by the chain rule of each operation. The comparisons
+// compare values. A zero denominator gives a zero derivative (a side taken
+// where it is not defined) so that no trap fires where the value is fine.
+struct Foam::scalarExpression::dual
+{
+    scalar v, d;
+
+    dual(const scalar value = 0, const scalar derivative = 0)
+    :
+        v(value),
+        d(derivative)
+    {}
+
+    static scalar ratio(const scalar num, const scalar den)
+    {
+        return den != 0 ? num/den : 0;
+    }
+
+    // Arithmetic
+    friend dual operator-(const dual& a) { return {-a.v, -a.d}; }
+    friend dual operator+(const dual& b, const dual& a)
+    {
+        return {b.v + a.v, b.d + a.d};
+    }
+    friend dual operator-(const dual& b, const dual& a)
+    {
+        return {b.v - a.v, b.d - a.d};
+    }
+    friend dual operator*(const dual& b, const dual& a)
+    {
+        return {b.v*a.v, b.d*a.v + b.v*a.d};
+    }
+    friend dual operator/(const dual& b, const dual& a)
+    {
+        return {b.v/a.v, ratio(b.d*a.v - b.v*a.d, a.v*a.v)};
+    }
+
+    // Comparisons of the values
+    friend bool operator<(const dual& b, const dual& a) { return b.v < a.v; }
+    friend bool operator<=(const dual& b, const dual& a) { return b.v <= a.v; }
+    friend bool operator>(const dual& b, const dual& a) { return b.v > a.v; }
+    friend bool operator>=(const dual& b, const dual& a) { return b.v >= a.v; }
+    friend bool operator==(const dual& b, const dual& a) { return b.v == a.v; }
+    friend bool operator!=(const dual& b, const dual& a) { return b.v != a.v; }
+
+    // Functions of one argument: f(a) and f'(a) a'
+    friend dual sqrt(const dual& a)
+    {
+        const scalar s = std::sqrt(a.v);
+        return {s, ratio(a.d, 2*s)};
+    }
+    friend dual exp(const dual& a)
+    {
+        const scalar e = std::exp(a.v);
+        return {e, e*a.d};
+    }
+    friend dual log(const dual& a) { return {std::log(a.v), ratio(a.d, a.v)}; }
+    friend dual log10(const dual& a)
+    {
+        return {std::log10(a.v), ratio(a.d, a.v*std::log(10.0))};
+    }
+    friend dual sin(const dual& a)
+    {
+        return {std::sin(a.v), std::cos(a.v)*a.d};
+    }
+    friend dual cos(const dual& a)
+    {
+        return {std::cos(a.v), -std::sin(a.v)*a.d};
+    }
+    friend dual tan(const dual& a)
+    {
+        const scalar c = std::cos(a.v);
+        return {std::tan(a.v), ratio(a.d, c*c)};
+    }
+    friend dual asin(const dual& a)
+    {
+        return {std::asin(a.v), ratio(a.d, std::sqrt(1 - a.v*a.v))};
+    }
+    friend dual acos(const dual& a)
+    {
+        return {std::acos(a.v), -ratio(a.d, std::sqrt(1 - a.v*a.v))};
+    }
+    friend dual atan(const dual& a)
+    {
+        return {std::atan(a.v), a.d/(1 + a.v*a.v)};
+    }
+    friend dual sinh(const dual& a)
+    {
+        return {std::sinh(a.v), std::cosh(a.v)*a.d};
+    }
+    friend dual cosh(const dual& a)
+    {
+        return {std::cosh(a.v), std::sinh(a.v)*a.d};
+    }
+    friend dual tanh(const dual& a)
+    {
+        const scalar t = std::tanh(a.v);
+        return {t, (1 - t*t)*a.d};
+    }
+    friend dual abs(const dual& a)
+    {
+        return {std::abs(a.v), a.v > 0 ? a.d : a.v < 0 ? -a.d : 0};
+    }
+    friend dual floor(const dual& a) { return std::floor(a.v); }
+    friend dual ceil(const dual& a) { return std::ceil(a.v); }
+    friend dual degToRad(const dual& a)
+    {
+        return {degToRad(a.v), degToRad(a.d)};
+    }
+    friend dual radToDeg(const dual& a)
+    {
+        return {radToDeg(a.v), radToDeg(a.d)};
+    }
+
+    // Functions of two arguments (b, a)
+    friend dual pow(const dual& b, const dual& a)
+    {
+        const scalar p = std::pow(b.v, a.v);
+        return
+        {
+            p,
+            (b.d != 0 ? a.v*std::pow(b.v, a.v - 1)*b.d : 0)
+          + (a.d != 0 ? p*std::log(b.v)*a.d : 0)
+        };
+    }
+    friend dual atan2(const dual& b, const dual& a)
+    {
+        return
+        {
+            std::atan2(b.v, a.v),
+            ratio(a.v*b.d - b.v*a.d, a.v*a.v + b.v*b.v)
+        };
+    }
+    friend dual hypot(const dual& b, const dual& a)
+    {
+        const scalar h = std::hypot(b.v, a.v);
+        return {h, ratio(b.v*b.d + a.v*a.d, h)};
+    }
+};
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::scalar Foam::scalarExpression::run
+template<class Type>
+Type Foam::scalarExpression::run
 (
     const instruction* code,
     const label n,
-    const scalar* vars
+    const Type* vars
 )
 {
-    scalar s[maxStack];
+    // The scalar functions by name; a dual's are found by argument lookup
+    using std::sqrt; using std::exp; using std::log; using std::log10;
+    using std::sin; using std::cos; using std::tan; using std::asin;
+    using std::acos; using std::atan; using std::sinh; using std::cosh;
+    using std::tanh; using std::abs; using std::floor; using std::ceil;
+    using std::pow; using std::atan2; using std::hypot;
+
+    Type s[maxStack];
     label top = -1;
 
     for (label pc = 0; pc < n; ++pc)
@@ -418,14 +571,14 @@ Foam::scalar Foam::scalarExpression::run
         const instruction& c = code[pc];
 
         // The operand of a unary operation, the right one of a binary
-        scalar a = 0;
+        Type a = 0;
         if (c.op >= opNeg)
         {
-            a = (c.right == inValue) ? c.value
+            a = (c.right == inValue) ? Type(c.value)
               : (c.right == inVariable) ? vars[c.arg] : s[top];
             top -= (c.op >= opAdd && c.right == onStack);
         }
-        const scalar b = (c.op >= opAdd) ? s[top] : 0;
+        const Type b = (c.op >= opAdd) ? s[top] : Type(0);
 
         switch (c.op)
         {
@@ -434,44 +587,44 @@ Foam::scalar Foam::scalarExpression::run
             case opJumpIfZero: pc = (s[top--] == 0) ? c.arg - 1 : pc; break;
             case opJump: pc = c.arg - 1; break;
             case opNeg: s[top] = -a; break;
-            case opNot: s[top] = (a == 0); break;
+            case opNot: s[top] = Type(a == 0); break;
             case opSqr: s[top] = a*a; break;
-            case opSqrt: s[top] = std::sqrt(a); break;
-            case opExp: s[top] = std::exp(a); break;
-            case opLog: s[top] = std::log(a); break;
-            case opLog10: s[top] = std::log10(a); break;
-            case opSin: s[top] = std::sin(a); break;
-            case opCos: s[top] = std::cos(a); break;
-            case opTan: s[top] = std::tan(a); break;
-            case opAsin: s[top] = std::asin(a); break;
-            case opAcos: s[top] = std::acos(a); break;
-            case opAtan: s[top] = std::atan(a); break;
-            case opSinh: s[top] = std::sinh(a); break;
-            case opCosh: s[top] = std::cosh(a); break;
-            case opTanh: s[top] = std::tanh(a); break;
-            case opAbs: s[top] = std::abs(a); break;
-            case opFloor: s[top] = std::floor(a); break;
-            case opCeil: s[top] = std::ceil(a); break;
+            case opSqrt: s[top] = sqrt(a); break;
+            case opExp: s[top] = exp(a); break;
+            case opLog: s[top] = log(a); break;
+            case opLog10: s[top] = log10(a); break;
+            case opSin: s[top] = sin(a); break;
+            case opCos: s[top] = cos(a); break;
+            case opTan: s[top] = tan(a); break;
+            case opAsin: s[top] = asin(a); break;
+            case opAcos: s[top] = acos(a); break;
+            case opAtan: s[top] = atan(a); break;
+            case opSinh: s[top] = sinh(a); break;
+            case opCosh: s[top] = cosh(a); break;
+            case opTanh: s[top] = tanh(a); break;
+            case opAbs: s[top] = abs(a); break;
+            case opFloor: s[top] = floor(a); break;
+            case opCeil: s[top] = ceil(a); break;
             case opDeg2rad: s[top] = degToRad(a); break;
             case opRad2deg: s[top] = radToDeg(a); break;
-            case opSign: s[top] = (a >= 0) ? 1 : -1; break;
+            case opSign: s[top] = Type((a >= 0) ? 1 : -1); break;
             case opAdd: s[top] = b + a; break;
             case opSub: s[top] = b - a; break;
             case opMul: s[top] = b*a; break;
             case opDiv: s[top] = b/a; break;
-            case opPow: s[top] = std::pow(b, a); break;
-            case opLt: s[top] = (b < a); break;
-            case opLe: s[top] = (b <= a); break;
-            case opGt: s[top] = (b > a); break;
-            case opGe: s[top] = (b >= a); break;
-            case opEq: s[top] = (b == a); break;
-            case opNe: s[top] = (b != a); break;
-            case opAnd: s[top] = (b != 0 && a != 0); break;
-            case opOr: s[top] = (b != 0 || a != 0); break;
-            case opAtan2: s[top] = std::atan2(b, a); break;
+            case opPow: s[top] = pow(b, a); break;
+            case opLt: s[top] = Type(b < a); break;
+            case opLe: s[top] = Type(b <= a); break;
+            case opGt: s[top] = Type(b > a); break;
+            case opGe: s[top] = Type(b >= a); break;
+            case opEq: s[top] = Type(b == a); break;
+            case opNe: s[top] = Type(b != a); break;
+            case opAnd: s[top] = Type(b != 0 && a != 0); break;
+            case opOr: s[top] = Type(b != 0 || a != 0); break;
+            case opAtan2: s[top] = atan2(b, a); break;
             case opMin: s[top] = std::min(b, a); break;
             case opMax: s[top] = std::max(b, a); break;
-            case opHypot: s[top] = std::hypot(b, a); break;
+            case opHypot: s[top] = hypot(b, a); break;
         }
     }
 
@@ -479,9 +632,23 @@ Foam::scalar Foam::scalarExpression::run
 }
 
 
+// The scalar code is what value() runs
+template Foam::scalar Foam::scalarExpression::run<Foam::scalar>
+(
+    const instruction*,
+    label,
+    const scalar*
+);
+
+
 std::string Foam::scalarExpression::compile()
 {
     code_.clear();
+    if (variables_.size() > maxVariables)
+    {
+        return "more variables than maxVariables = "
+            + std::to_string(maxVariables);
+    }
     try
     {
         // Folding constants may give NaN or inf (1/0, 1e300*1e300): a value
@@ -569,6 +736,24 @@ Foam::scalarExpression::scalarExpression
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::scalarExpression::value
+(
+    const scalar* vars,
+    const label var,
+    scalar& derivative
+) const
+{
+    dual x[maxVariables];
+    for (label i = 0; i < variables_.size(); ++i)
+    {
+        x[i] = dual(vars[i], i == var);
+    }
+    const dual result = run(code_.data(), code_.size(), x);
+    derivative = result.d;
+    return result.v;
+}
+
 
 bool Foam::scalarExpression::dependsOn(const word& var) const
 {

@@ -102,8 +102,7 @@ void Foam::hazardMaps::writeRaster
 Foam::hazardMaps::hazardMaps
 (
     const mpmGrid& grid,
-    const topographyModel& topography,
-    const double* Znodes
+    const topographyModel& topography
 )
 :
     grid_(grid),
@@ -113,7 +112,7 @@ Foam::hazardMaps::hazardMaps
     const label n = g.nNodes();
     Gx_.assign(n, 0.0);
     Gy_.assign(n, 0.0);
-    nodeTerrainGradient(g, Znodes, Gx_.data(), Gy_.data());
+    topography.sampleGradient(g, Gx_.data(), Gy_.data());
     maxHeight_.assign(n, 0.0);
     maxSpeed_.assign(n, 0.0);
     maxIntensity_.assign(n, 0.0);

@@ -57,6 +57,20 @@ Foam::scalar Foam::topographyModels::expressionTopography::Z
 }
 
 
+Foam::vector2D Foam::topographyModels::expressionTopography::gradient
+(
+    const scalar x,
+    const scalar y
+) const
+{
+    const scalar xy[2] = {x, y};
+    vector2D grad;
+    Z_.value(xy, 0, grad.x());
+    Z_.value(xy, 1, grad.y());
+    return grad;
+}
+
+
 void Foam::topographyModels::expressionTopography::describe(Ostream& os) const
 {
     os  << "expression (Z = ";

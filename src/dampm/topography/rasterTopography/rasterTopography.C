@@ -70,6 +70,18 @@ Foam::scalar Foam::topographyModels::rasterTopography::Z
 }
 
 
+Foam::vector2D Foam::topographyModels::rasterTopography::gradient
+(
+    const scalar x,
+    const scalar y
+) const
+{
+    scalar Z, dZdx, dZdy;
+    raster_->evaluate(x, y, Z, dZdx, dZdy);
+    return vector2D(dZdx, dZdy);
+}
+
+
 void Foam::topographyModels::rasterTopography::checkCovers
 (
     const gridGeometry& g
