@@ -13,7 +13,11 @@ Description
       loses it (noSlip) or has it reduced by mu |v.n| (Coulomb, down to
       zero), against the closed form and a worked example; the force is
       the momentum taken, m (v - v_new)/dt; a node moving away is left
-      alone and takes no force.
+      alone and takes no force;
+    - nodePressure: the normal force m |v.n|/dt over the node's cell seen
+      along the normal, |nx| dy dz + |ny| dz dx + |nz| dx dy, for walls
+      facing x, y and z and inclined ones (dx dy whatever the wall's
+      orientation before: twice too much on a wall facing x here).
 
 \*---------------------------------------------------------------------------*/
 
@@ -101,6 +105,34 @@ TEST(barrierModel, NodeMovingAwayIsLeftAlone)
     EXPECT_EQ(probe.contact(5, 4, 3, 2, v, 1e-3, F, p), v);
     EXPECT_EQ(F, vector(Zero));
     EXPECT_EQ(p, 0);
+}
+
+
+TEST(barrierModel, NodePressureIsTheNormalForceOverTheNodesAreaOnTheWall)
+{
+    const gridGeometry g = probeGrid();
+    const scalar dx = g.dx[0], dy = g.dx[1], dz = g.dx[2];
+    const scalar m = 2, dt = 1e-3;
+    const vector normals[] =
+    {
+        vector(1, 0, 0), vector(0, -1, 0), vector(0, 0, 1),
+        vector(1, 2, 2)/3, vector(-2, 1, 2)/3
+    };
+    for (const vector& n : normals)
+    {
+        barrierProbe probe(planeThroughNode(n, "slip"));
+        // 3 m/s into the wall, 1 m/s along it
+        vector t = (n ^ vector(0.3, 0.5, 0.7));
+        t /= mag(t);
+        vector F;
+        scalar p;
+        probe.contact(5, 4, 3, m, -3*n + t, dt, F, p);
+        const scalar area =
+            mag(n.x())*dy*dz + mag(n.y())*dz*dx + mag(n.z())*dx*dy;
+        const scalar expected = m*3/dt/area;
+        EXPECT_NEAR(p, expected, tol*expected) << "normal " << n;
+        EXPECT_NEAR(mag(F), m*3/dt, tol*m*3/dt) << "normal " << n;
+    }
 }
 
 
