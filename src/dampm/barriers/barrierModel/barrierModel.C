@@ -98,7 +98,6 @@ Foam::barrierModel::barrierModel
     friction_(0),
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
-    nStopped_(0),
     guardDepth_(0),
     nearLo_{0, 0, 0},
     nearHi_{-1, -1, -1},
@@ -802,7 +801,6 @@ Foam::label Foam::barrierModel::stopEntries
                 p.x[d][i] = x[d];
             }
         }
-        nStopped_ += nc;
     }
 
     // Until the next guardReach, check every particle (fail safe)
