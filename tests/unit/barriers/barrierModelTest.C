@@ -35,9 +35,10 @@ namespace
 //  node is in contact) with unit normal n, and the contact's keywords
 std::string planeThroughNode(const vector& n, const std::string& contact)
 {
-    const point o = probeGrid().nodeCoord(0, 5)*vector(1, 0, 0)
-      + probeGrid().nodeCoord(1, 4)*vector(0, 1, 0)
-      + probeGrid().nodeCoord(2, 3)*vector(0, 0, 1) + 0.05*n;
+    const gridGeometry g = probeGrid();
+    const point o =
+        point(g.nodeCoord(0, 5), g.nodeCoord(1, 4), g.nodeCoord(2, 3))
+      + 0.05*n;
     OStringStream os;
     os.precision(17);
     os  << "type plane; point " << o << "; normal " << n << "; contact "

@@ -11,9 +11,8 @@ Description
     0.1 x 0.15 x 0.2 m cells:
     - on a plane Z = 0.3 + 0.2 x - 0.1 y the signed distance
       (z - Z)/sqrt(1 + |grad Z|^2) and the normal (-Zx, -Zy, 1)/sqrt(...)
-      are exact (central differences of a linear function); on a parabola
-      Z = 0.4 + x^2 the normal is (-2 x, 0, 1)/sqrt(1 + 4 x^2) (central
-      differences exact too) and the distance the first-order
+      to round-off; on a parabola Z = 0.4 + x^2 the normal
+      (-2 x, 0, 1)/sqrt(1 + 4 x^2) and the distance's first-order form
       (z - Z)/sqrt(1 + 4 x^2);
     - the particles' guard acts half a cell (of the smallest cell size)
       below the surface: a particle that dips less deep is left to the node
@@ -45,7 +44,7 @@ const vector n = vector(-0.2, 0.1, 1)/norm;
 
 TEST(terrainBarrier, SignedDistanceAndNormalOfPlaneAndCurvedTerrain)
 {
-    // Round-off of Z's differences over 1 cm: 1e-15 m/1e-2 m
+    // Round-off (of a central difference over 1 cm: 1e-15 m/1e-2 m)
     constexpr double tol = 1e-12;
     barrierProbe plane(terrain("0.3 + 0.2*x - 0.1*y"));
     for (const point& x :

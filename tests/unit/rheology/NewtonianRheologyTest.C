@@ -138,7 +138,8 @@ TEST(NewtonianRheology, SpinTurnsTheStressWithTheJaumannRate)
         error[k] = 0;
         for (int i = 0; i < 3; ++i)
         {
-            error[k] = std::max(error[k], std::abs(cols.sigma[i][0] - exact[i]));
+            error[k] =
+                std::max(error[k], std::abs(cols.sigma[i][0] - exact[i]));
         }
     }
     // First order: about w^2 t dt (a - c)
