@@ -18,6 +18,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "STLcheck.H"
+#include "stlText.H"
 #include "OSspecific.H"
 #include <gtest/gtest.h>
 #include <cfenv>
@@ -33,33 +34,6 @@ using namespace Foam;
 
 namespace
 {
-
-typedef std::vector<std::vector<std::vector<float>>> triangleList;
-
-//- The 12 triangles of a unit cube, facing outwards
-triangleList cube()
-{
-    const float c[8][3] =
-    {
-        {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-        {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}
-    };
-    const int f[12][3] =
-    {
-        {0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-        {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}
-    };
-    triangleList t(12);
-    for (int i = 0; i < 12; ++i)
-    {
-        for (int v = 0; v < 3; ++v)
-        {
-            t[i].push_back({c[f[i][v]][0], c[f[i][v]][1], c[f[i][v]][2]});
-        }
-    }
-    return t;
-}
-
 
 //- Binary STL bytes; bits: {(triangle, vertex, component): raw uint32}
 std::string binary
@@ -96,24 +70,6 @@ std::string binary
         s.append(2, '\0');
     }
     return s;
-}
-
-
-//- ASCII STL text: facet t at line 2 + 7 t, its vertices at 4 + 7 t + v
-std::string ascii(const triangleList& tris, const bool end = true)
-{
-    std::string s("solid cube\n");
-    for (const auto& tri : tris)
-    {
-        s += "  facet normal 0 0 0\n    outer loop\n";
-        for (const auto& v : tri)
-        {
-            s += "      vertex " + std::to_string(v[0]) + " "
-              + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
-        }
-        s += "    endloop\n  endfacet\n";
-    }
-    return end ? s + "endsolid cube\n" : s;
 }
 
 

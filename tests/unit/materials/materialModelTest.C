@@ -17,8 +17,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "materialModel.H"
-#include "IStringStream.H"
+#include "materialState.H"
 #include <gtest/gtest.h>
 #include <cfenv>
 #include <cmath>
@@ -50,25 +49,13 @@ public:
 };
 
 
-//- mpm3dProperties text: material and its Coeffs
-dictionary properties(const std::string& material, const std::string& coeffs)
-{
-    IStringStream is
-    (
-        "material " + material + ";\n" + material + "Coeffs\n{\n" + coeffs
-      + "\n}\n"
-    );
-    return dictionary(is);
-}
-
-
 //- The message of the error New throws ("" if none)
 std::string refusal(const std::string& material, const std::string& coeffs)
 {
     const foamTraps traps;
     try
     {
-        materialModel::New(properties(material, coeffs));
+        materialModel::New(materialDict(material, coeffs));
     }
     catch (const Foam::error& err)
     {
@@ -135,7 +122,7 @@ TEST(materialModel, EndsOfTheRangesGiveFiniteWaveSpeeds)
     (
         materialModel::New
         (
-            properties
+            materialDict
             (
                 "linearElastic",
                 "rho 1e-3; E 1e13; nu 0.4999999;"
@@ -151,7 +138,7 @@ TEST(materialModel, EndsOfTheRangesGiveFiniteWaveSpeeds)
     (
         materialModel::New
         (
-            properties("Bingham", "rho 1e5; mu 1; tauY 1e13; c 1e-3;")
+            materialDict("Bingham", "rho 1e5; mu 1; tauY 1e13; c 1e-3;")
         )
     );
     EXPECT_TRUE(std::isfinite(fluid->waveSpeed()));

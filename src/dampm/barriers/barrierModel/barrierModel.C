@@ -98,7 +98,6 @@ Foam::barrierModel::barrierModel
     friction_(0),
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     overtopDir_(Zero),
-    nStopped_(0),
     guardDepth_(0),
     nearLo_{0, 0, 0},
     nearHi_{-1, -1, -1},
@@ -802,7 +801,6 @@ Foam::label Foam::barrierModel::stopEntries
                 p.x[d][i] = x[d];
             }
         }
-        nStopped_ += nc;
     }
 
     // Until the next guardReach, check every particle (fail safe)
@@ -825,10 +823,20 @@ void Foam::barrierModel::nodePressure
 ) const
 {
     p.assign(g.nNodes(), 0.0);
-    const scalar area = g.dx[0]*g.dx[1];
+    // The node's force is the momentum of its cell (dx dy dz about it), so
+    // its area on the wall is that cell seen along the normal: the faces'
+    // areas projected, dy dz for a wall facing x. A normal of zero (across
+    // a plane slice) takes no force
+    const double faceArea[3] =
+        {g.dx[1]*g.dx[2], g.dx[2]*g.dx[0], g.dx[0]*g.dx[1]};
     forAll(nodes_, c)
     {
-        p[nodes_[c]] = normalForce_[c]/area;
+        double area = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+            area += std::abs(normal_[d][c])*faceArea[d];
+        }
+        p[nodes_[c]] = area > 0 ? normalForce_[c]/area : 0;
     }
 }
 

@@ -104,15 +104,18 @@ void Foam::materialModels::DruckerPrager::updateStress
                 s *= sqrtJ2new/sqrtJ2;
                 sigma = s;
                 sigma.diagonal().array() += I1new/3;
+                epsP[i] += dLambda;
             }
             else
             {
-                // Apex: hydrostatic at the cone's tip
+                // Apex: hydrostatic at the cone's tip. The whole trial
+                // deviator is plastic, sqrt(J2)/G of equivalent shear
+                // strain; the cone's dLambda overshoots the tip
                 sigma.setZero();
                 sigma.diagonal().array() +=
                     alpha > 0 ? k/(3*alpha) : I1/3;
+                epsP[i] += sqrtJ2/G;
             }
-            epsP[i] += dLambda;
         }
         mp.setStress(i, sigma);
     }

@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    barrierModel's contact at the nodes (applyContact), with a plane as the
+    barrier on a grid of 0.1 x 0.15 x 0.2 m cells (barrierProbe.H):
+    - a node moving into the barrier keeps the tangential velocity (slip),
+      loses it (noSlip) or has it reduced by mu |v.n| (Coulomb, down to
+      zero), against the closed form and a worked example; the force is
+      the momentum taken, m (v - v_new)/dt; a node moving away is left
+      alone and takes no force;
+    - nodePressure: the normal force m |v.n|/dt over the node's cell seen
+      along the normal, |nx| dy dz + |ny| dz dx + |nz| dx dy, for walls
+      facing x, y and z and inclined ones (dx dy whatever the wall's
+      orientation before: twice too much on a wall facing x here).
+
+\*---------------------------------------------------------------------------*/
+
+#include "barrierProbe.H"
+#include "OStringStream.H"
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace Foam;
+
+namespace
+{
+
+//- A plane through a point 0.05 m outside node (5, 4, 3) (so that the
+//  node is in contact) with unit normal n, and the contact's keywords
+std::string planeThroughNode(const vector& n, const std::string& contact)
+{
+    const gridGeometry g = probeGrid();
+    const point o =
+        point(g.nodeCoord(0, 5), g.nodeCoord(1, 4), g.nodeCoord(2, 3))
+      + 0.05*n;
+    OStringStream os;
+    os.precision(17);
+    os  << "type plane; point " << o << "; normal " << n << "; contact "
+        << contact.c_str() << ";";
+    return os.str();
+}
+
+//- Round-off of a few products
+constexpr double tol = 1e-14;
+
+} // End anonymous namespace
+
+
+TEST(barrierModel, NodeMovingInLosesItsNormalVelocityByItsContact)
+{
+    const scalar m = 2, dt = 1e-3;
+    const vector n = vector(1, 2, 2)/3;
+    const vector v(-1.5, 0.4, -2);
+    ASSERT_LT(v & n, 0);
+    const std::pair<word, std::string> contacts[] =
+    {
+        {"slip", "slip"}, {"noSlip", "noSlip"},
+        {"Coulomb", "Coulomb; frictionCoefficient 0.3"}
+    };
+    for (const auto& c : contacts)
+    {
+        barrierProbe probe(planeThroughNode(n, c.second));
+        vector F;
+        scalar p;
+        const vector vNew = probe.contact(5, 4, 3, m, v, dt, F, p);
+        const vector expected = contactVelocity(v, n, c.first, 0.3);
+        EXPECT_LT(mag(vNew - expected), tol*mag(v)) << c.first;
+        EXPECT_LT(mag(F - m*(v - expected)/dt), tol*m*mag(v)/dt) << c.first;
+        EXPECT_NEAR(vNew & n, 0, tol*mag(v)) << c.first;
+    }
+
+    // Worked example: into a floor at 4 m/s, 3 m/s along it, mu = 0.5
+    barrierProbe floor(planeThroughNode(vector(0, 0, 1),
+        "Coulomb; frictionCoefficient 0.5"));
+    vector F;
+    scalar p;
+    EXPECT_LT
+    (
+        mag(floor.contact(5, 4, 3, m, vector(3, 0, -4), dt, F, p)
+          - vector(1, 0, 0)),
+        tol
+    );
+    // Sticks where the tangential speed is within mu |v.n|
+    EXPECT_EQ
+    (
+        floor.contact(5, 4, 3, m, vector(1.5, 0.5, -4), dt, F, p),
+        vector(Zero)
+    );
+}
+
+
+TEST(barrierModel, NodeMovingAwayIsLeftAlone)
+{
+    const vector n = vector(-2, 1, 2)/3;
+    barrierProbe probe(planeThroughNode(n, "noSlip"));
+    const vector v(-1, 1, 0.3);
+    ASSERT_GT(v & n, 0);
+    vector F;
+    scalar p;
+    EXPECT_EQ(probe.contact(5, 4, 3, 2, v, 1e-3, F, p), v);
+    EXPECT_EQ(F, vector(Zero));
+    EXPECT_EQ(p, 0);
+}
+
+
+TEST(barrierModel, NodePressureIsTheNormalForceOverTheNodesAreaOnTheWall)
+{
+    const gridGeometry g = probeGrid();
+    const scalar dx = g.dx[0], dy = g.dx[1], dz = g.dx[2];
+    const scalar m = 2, dt = 1e-3;
+    const vector normals[] =
+    {
+        vector(1, 0, 0), vector(0, -1, 0), vector(0, 0, 1),
+        vector(1, 2, 2)/3, vector(-2, 1, 2)/3
+    };
+    for (const vector& n : normals)
+    {
+        barrierProbe probe(planeThroughNode(n, "slip"));
+        // 3 m/s into the wall, 1 m/s along it
+        vector t = (n ^ vector(0.3, 0.5, 0.7));
+        t /= mag(t);
+        vector F;
+        scalar p;
+        probe.contact(5, 4, 3, m, -3*n + t, dt, F, p);
+        const scalar area =
+            mag(n.x())*dy*dz + mag(n.y())*dz*dx + mag(n.z())*dx*dy;
+        const scalar expected = m*3/dt/area;
+        EXPECT_NEAR(p, expected, tol*expected) << "normal " << n;
+        EXPECT_NEAR(mag(F), m*3/dt, tol*m*3/dt) << "normal " << n;
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,184 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    viscoplasticFluid (Newtonian, Bingham, HerschelBulkley) against its
+    closed forms (materialModelTest.C checks the coefficients' ranges):
+    - Tait's pressure rho c^2/gamma (J^-gamma - 1), cut at pMin, and the
+      rest volume restJ its inverse;
+    - Newtonian: sigma = 2 mu dev(D) - p(J) I, with no stress memory;
+    - HerschelBulkley, purely viscous: the shear stress
+      k gammaDot^n + tauY (1 - exp(-m gammaDot));
+    - Bingham's default Maxwell modulus rho c^2/4 with its wave speed
+      c sqrt(1 + 4 G/(3 rho c^2)), and the Maxwell element relaxing
+      exactly: sigma_xy(t) = mu_eff gammaDot (1 - exp(-G t/mu_eff)) at any
+      step.
+
+\*---------------------------------------------------------------------------*/
+
+#include "materialState.H"
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace Foam;
+
+namespace
+{
+
+typedef materialState::tensor3 tensor3;
+
+//- Water-like: rho 1000, c 20, gamma 7
+const std::string tait("rho 1000; c 20; gamma 7;");
+
+constexpr double rho = 1000, c = 20, gamma = 7;
+
+double taitPressure(const double J)
+{
+    return rho*c*c/gamma*(std::pow(J, -gamma) - 1);
+}
+
+} // End anonymous namespace
+
+
+TEST(viscoplasticFluid, TaitPressureCutAtPMinAndItsRestVolume)
+{
+    autoPtr<materialModel> water
+    (
+        materialModel::New(materialDict("Newtonian", tait + " mu 0;"))
+    );
+    autoPtr<materialModel> pulling
+    (
+        materialModel::New
+        (
+            materialDict("Newtonian", tait + " mu 0; pMin -1e4;")
+        )
+    );
+    constexpr double tol = 1e-13; // pow and a few products
+    const double Js[4] = {0.97, 0.999, 1.0, 1.02};
+    materialState a(*water, 4), b(*pulling, 4);
+    for (int i = 0; i < 4; ++i)
+    {
+        a.setJ(i, Js[i]);
+        b.setJ(i, Js[i]);
+    }
+    a.update(*water, 1e-3);
+    b.update(*pulling, 1e-3);
+    for (int i = 0; i < 4; ++i)
+    {
+        const double p = taitPressure(Js[i]);
+        const double scale = rho*c*c*1e-3;
+        EXPECT_NEAR(a.p(i), std::max(p, 0.0), tol*scale) << Js[i];
+        EXPECT_NEAR(b.p(i), std::max(p, -1e4), tol*scale) << Js[i];
+        EXPECT_NEAR(a.stress(i)(1, 1), -a.p(i), tol*scale) << Js[i];
+        EXPECT_EQ(a.stress(i)(0, 1), 0);
+        if (p >= 0)
+        {
+            EXPECT_NEAR(taitPressure(water->restJ(p)), p, tol*scale);
+        }
+    }
+    EXPECT_EQ(water->waveSpeed(), c);
+}
+
+
+TEST(viscoplasticFluid, NewtonianStressIsTwiceMuTimesTheDeviatoricRate)
+{
+    const double mu = 0.5;
+    autoPtr<materialModel> fluid
+    (
+        materialModel::New(materialDict("Newtonian", tait + " mu 0.5;"))
+    );
+    EXPECT_EQ(fluid->explicitViscosity(), mu);
+
+    materialState state(*fluid, 1);
+    tensor3 L;
+    L << 0.3, 1.2, 0,
+         -0.4, -0.7, 0.2,
+         0.1, 0, 0.6;
+    state.setGradient(0, L);
+    state.setJ(0, 0.99);
+    state.setStress(0, 1e3*tensor3::Ones());
+    state.update(*fluid, 1e-3);
+
+    const tensor3 D = 0.5*(L + L.transpose());
+    const tensor3 expected =
+        2*mu*materialParticles::dev(D)
+      - taitPressure(0.99)*tensor3::Identity();
+    constexpr double tol = 1e-13; // relative to the pressure
+    EXPECT_LT
+    (
+        (state.stress(0) - expected).cwiseAbs().maxCoeff(),
+        tol*taitPressure(0.99)
+    );
+}
+
+
+TEST(viscoplasticFluid, HerschelBulkleyShearStress)
+{
+    const double kHB = 20, n = 0.6, tauY = 300, m = 50;
+    autoPtr<materialModel> mud
+    (
+        materialModel::New
+        (
+            materialDict("HerschelBulkley", tait
+              + " k 20; n 0.6; tauY 300; m 50; shearModulus 0;")
+        )
+    );
+    constexpr double tol = 1e-13; // pow, expm1 and a few products
+    for (const double gammaDot : {0.05, 1.0, 30.0})
+    {
+        materialState state(*mud, 1);
+        tensor3 L = tensor3::Zero();
+        L(0, 2) = gammaDot;
+        state.setGradient(0, L);
+        state.update(*mud, 1e-3);
+        const double tau =
+            kHB*std::pow(gammaDot, n) - tauY*std::expm1(-m*gammaDot);
+        EXPECT_NEAR(state.stress(0)(0, 2), tau, tol*tau) << gammaDot;
+    }
+}
+
+
+TEST(viscoplasticFluid, BinghamMaxwellStressRelaxesExactlyAtAnyStep)
+{
+    const double mu = 10, tauY = 200, m = 100;
+    const double G = 0.25*rho*c*c;
+    autoPtr<materialModel> mud
+    (
+        materialModel::New
+        (
+            materialDict("Bingham", tait + " mu 10; tauY 200;")
+        )
+    );
+    EXPECT_EQ(mud->explicitViscosity(), 0);
+    EXPECT_NEAR(mud->waveSpeed(), c*std::sqrt(1 + 4*G/(3*rho*c*c)), 1e-14*c);
+
+    const double gammaDot = 0.5, t = 1e-3;
+    const double muEff = mu - tauY*std::expm1(-m*gammaDot)/gammaDot;
+    const double steady = muEff*gammaDot;
+    const double expected = steady*(1 - std::exp(-G*t/muEff));
+    constexpr double tol = 1e-12; // round-off over up to 400 steps
+    for (const int nSteps : {1, 13, 400})
+    {
+        materialState state(*mud, 1);
+        tensor3 L = tensor3::Zero();
+        // Pure shear, no spin
+        L(0, 1) = L(1, 0) = gammaDot/2;
+        state.setGradient(0, L);
+        for (int s = 0; s < nSteps; ++s)
+        {
+            state.update(*mud, t/nSteps);
+        }
+        EXPECT_NEAR(state.stress(0)(0, 1), expected, tol*steady) << nSteps;
+        EXPECT_EQ(state.p(0), 0);
+    }
+    // Well short of the steady stress: the test sees the relaxation
+    EXPECT_LT(expected, 0.9*steady);
+}
+
+
+// ************************************************************************* //
