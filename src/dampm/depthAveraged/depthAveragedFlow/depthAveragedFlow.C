@@ -763,8 +763,10 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
 
     // Gravity waves, and gravity and elastic waves together (without a
     // Maxwell stress only the first). simd: the maxima are exact in any
-    // order, and the square roots vectorise.
-    double maxWave = 0, maxElastic = 0;
+    // order, and the square roots vectorise. The elastic speed is at least
+    // sqrt(2 G/rho), also when no column is left: an elasto-viscoplastic
+    // stress has no viscous limit to fall back on
+    double maxWave = 0, maxElastic = std::sqrt(cE2);
     if (cE2 > 0)
     {
         #pragma omp parallel for simd schedule(static) \
