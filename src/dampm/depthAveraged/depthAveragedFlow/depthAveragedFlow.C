@@ -629,8 +629,15 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     os  << (friction_->active() ? "  [active]" : "") << nl
         << "    rheology        ";
     rheology_->describe(os);
-    os  << (rheology_->active() ? "  [active]" : "") << nl
-        << "    sides          ";
+    os  << (rheology_->active() ? "  [active]" : "") << nl;
+    if (rheology_->viscosityLaw().tauY() > 0 && !basalActive())
+    {
+        // A plug sliding on a slope has D = 0: its in-plane stress cannot
+        // stop it, only a basal resistance can (doc section 7)
+        os  << "    (nothing resists at the bed: on a slope a plug slides"
+            << " for ever; basalShear true or a bed friction stops it)" << nl;
+    }
+    os  << "    sides          ";
     for (int d = 0; d < 2; ++d)
     {
         for (int s = 0; s < 2; ++s)
