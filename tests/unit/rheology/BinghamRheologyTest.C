@@ -14,9 +14,8 @@ Description
       or min(mu + tauY/gammaDot, muMax) gammaDot (bi-viscous); the largest
       viscosity mu + m tauY or muMax;
     - without a yield stress it is the Newtonian rheology, bit for bit;
-    - with a yield stress it waits for the default modulus and then relaxes
-      as a Maxwell element: sigma(t) = 2 mu_eff D (1 - exp(-G t/mu_eff)),
-      exactly at any step;
+    - with a yield stress and a modulus it is elasto-viscoplastic
+      (BinghamElastoViscoplasticTest.C);
     - basalShear: s = tauY a and the Newtonian drag; with the implicit
       update (resistanceUpdate) a layer on a slope theta stays exactly at
       rest up to its yield thickness h_y = tauY/(rho g sin cos), and above
@@ -99,41 +98,6 @@ TEST(BinghamRheology, WithoutYieldStressItIsTheNewtonianRheology)
     {
         EXPECT_EQ(a.sigma[k], b.sigma[k]) << k;
     }
-}
-
-
-TEST(BinghamRheology, YieldStressRelaxesAsAMaxwellElementAtAnyStep)
-{
-    const double mu = 50, tauY = 2000, m = 100, G = 19600, t = 0.5;
-    autoPtr<rheologyModel> rheology
-    (
-        rheologyModel::New(modelDict("rheology", "Bingham",
-            "mu 50; tauY 2000;"))
-    );
-    // Maxwell by default, G left to the solver (rho g H0/2)
-    EXPECT_TRUE(rheology->defaultShearModulus());
-    rheology->setDefaultShearModulus(G);
-
-    const double gammaDot = 0.05;
-    const double muEff = mu - tauY*std::expm1(-m*gammaDot)/gammaDot;
-    const double steady = muEff*gammaDot;
-    const double expected = steady*(1 - std::exp(-G*t/muEff));
-    constexpr double tol = 1e-12; // round-off over up to 500 steps
-    for (const int nSteps : {1, 20, 500})
-    {
-        columnArrays col({1}, {1}, {1});
-        // Pure shear, no spin: D_xy = gammaDot/2
-        col.setGradient({0, gammaDot/2, gammaDot/2, 0});
-        for (int n = 0; n < nSteps; ++n)
-        {
-            rheology->stress(col.view(), t/nSteps);
-        }
-        EXPECT_NEAR(col.sigma[1][0], expected, tol*steady) << nSteps;
-        EXPECT_EQ(col.sigma[0][0], 0);
-        EXPECT_EQ(col.sigma[2][0], 0);
-    }
-    // Half the steady stress or less: the test sees the relaxation
-    EXPECT_LT(expected, 0.9*steady);
 }
 
 

@@ -629,8 +629,15 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     os  << (friction_->active() ? "  [active]" : "") << nl
         << "    rheology        ";
     rheology_->describe(os);
-    os  << (rheology_->active() ? "  [active]" : "") << nl
-        << "    sides          ";
+    os  << (rheology_->active() ? "  [active]" : "") << nl;
+    if (rheology_->viscosityLaw().tauY() > 0 && !basalActive())
+    {
+        // A plug sliding on a slope has D = 0: its in-plane stress cannot
+        // stop it, only a basal resistance can (doc section 7)
+        os  << "    (nothing resists at the bed: on a slope a plug slides"
+            << " for ever; basalShear true or a bed friction stops it)" << nl;
+    }
+    os  << "    sides          ";
     for (int d = 0; d < 2; ++d)
     {
         for (int s = 0; s < 2; ++s)
@@ -763,8 +770,10 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
 
     // Gravity waves, and gravity and elastic waves together (without a
     // Maxwell stress only the first). simd: the maxima are exact in any
-    // order, and the square roots vectorise.
-    double maxWave = 0, maxElastic = 0;
+    // order, and the square roots vectorise. The elastic speed is at least
+    // sqrt(2 G/rho), also when no column is left: an elasto-viscoplastic
+    // stress has no viscous limit to fall back on
+    double maxWave = 0, maxElastic = std::sqrt(cE2);
     if (cE2 > 0)
     {
         #pragma omp parallel for simd schedule(static) \

@@ -41,9 +41,17 @@ Foam::rheologyModels::BinghamRheology::BinghamRheology
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+bool Foam::rheologyModels::BinghamRheology::elastoViscoplastic() const
+{
+    return G_ > 0 && viscosity_.tauY() > 0;
+}
+
+
 Foam::scalar Foam::rheologyModels::BinghamRheology::maxViscosity() const
 {
-    return viscosity_.maxViscosity();
+    // The elastic plug has no viscous limit: the elastic one holds (doc
+    // section 9)
+    return elastoViscoplastic() ? VGREAT : viscosity_.maxViscosity();
 }
 
 
@@ -53,6 +61,11 @@ void Foam::rheologyModels::BinghamRheology::stress
     const scalar dt
 ) const
 {
+    if (elastoViscoplastic())
+    {
+        elastoViscoplasticStress(p, mu_, viscosity_.tauY(), G_, dt);
+        return;
+    }
     const yieldViscosity muEff(viscosity_);
     viscousStress
     (
@@ -88,9 +101,18 @@ void Foam::rheologyModels::BinghamRheology::addResistance
 void Foam::rheologyModels::BinghamRheology::describe(Ostream& os) const
 {
     os  << "Bingham (";
-    viscosity_.describe(os);
-    os  << ", ";
-    describeStress(os);
+    if (elastoViscoplastic())
+    {
+        // The regularisation is not used
+        os  << "mu = " << mu_ << " Pa s, tauY = " << viscosity_.tauY()
+            << " Pa, elasto-viscoplastic stress, G = " << G_ << " Pa";
+    }
+    else
+    {
+        viscosity_.describe(os);
+        os  << ", ";
+        describeStress(os);
+    }
     os  << ", basal shear " << (basalShear_ ? "on" : "off") << ")";
 }
 
