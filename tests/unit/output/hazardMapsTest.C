@@ -71,7 +71,15 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
     EXPECT_NEAR(topo->mapOffset().x(), 1000, 1e-9);
     EXPECT_NEAR(topo->mapOffset().y(), 5000, 1e-9);
 
-    hazardMaps maps(grid, *topo);
+    // The shared box2D mesh is 1 m thick, under a terrain that rises 5 m
+    // across it: sampled as on a mesh whose z-range spans the terrain, as
+    // dampmFoam requires (not what this test is about)
+    gridGeometry spanning(g);
+    spanning.origin[2] = 90;
+    spanning.dx[2] = 20;
+    std::vector<double> Znodes(g.nNodes());
+    topo->sampleNodes(spanning, Znodes.data());
+    hazardMaps maps(grid, *topo, Znodes.data());
 
     // Two steps of a made-up node state: the maps keep the maxima
     shallowGrid nodes;

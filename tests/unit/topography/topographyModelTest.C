@@ -15,8 +15,7 @@ Description
     default; a 3D grid leaves that to the terrain barrier; meshRange finds
     the lowest and highest node of the mesh, ghosts excluded; every model's
     gradient is exact (flat, an expression against its closed form, a
-    raster's bilinear interpolant of a plane), and sampleGradient lays it
-    out at the nodes as sampleNodes does Z.
+    raster's bilinear interpolant of a plane).
 
 \*---------------------------------------------------------------------------*/
 
@@ -276,25 +275,6 @@ TEST(topographyModel, GradientIsExactForEachModel)
     EXPECT_NEAR(Zraster->gradient(0.5, 5).x(), 0, 1e-15)
         << "west of the first sample, Z is constant across the edge";
     EXPECT_NEAR(Zraster->gradient(0.5, 5).y(), 0.25, 1e-12);
-
-    // At the nodes, as sampleNodes lays out Z
-    const gridGeometry g(grid());
-    std::vector<double> gx(g.nNodes()), gy(g.nNodes());
-    Zexpr->sampleGradient(g, gx.data(), gy.data());
-    const gridGeometry::index nG = gridGeometry::nGhost;
-    for (label j = 0; j < g.nNodesDir[1]; ++j)
-    {
-        for (label i = 0; i < g.nNodesDir[0]; ++i)
-        {
-            const label n = i + j*g.nodeStride[1];
-            const vector2D grad = Zexpr->gradient
-            (
-                g.nodeCoord(0, i - nG), g.nodeCoord(1, j - nG)
-            );
-            ASSERT_EQ(gx[n], grad.x()) << "node " << n;
-            ASSERT_EQ(gy[n], grad.y()) << "node " << n;
-        }
-    }
 }
 
 

@@ -43,7 +43,7 @@ Foam::runOutMaps::runOutMaps
     }
 
     // The run-out's maps of the hand-off time (point fields there)
-    maps_.reset(new hazardMaps(*grid_, *topography_));
+    maps_.reset(new hazardMaps(*grid_, *topography_, nodes_.Z.data()));
 }
 
 

@@ -517,7 +517,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     if (slopeCorrection_ && !topography_->isFlat())
     {
         std::vector<double> gx(geom.nNodes()), gy(geom.nNodes());
-        topography_->sampleGradient(geom, gx.data(), gy.data());
+        nodeTerrainGradient(geom, nodes_.Z.data(), gx.data(), gy.data());
         for (label n = 0; n < geom.nNodes(); ++n)
         {
             kappaNode_[n] = 1/(1 + gx[n]*gx[n] + gy[n]*gy[n]);

@@ -102,7 +102,8 @@ void Foam::hazardMaps::writeRaster
 Foam::hazardMaps::hazardMaps
 (
     const mpmGrid& grid,
-    const topographyModel& topography
+    const topographyModel& topography,
+    const double* Znodes
 )
 :
     grid_(grid),
@@ -112,7 +113,7 @@ Foam::hazardMaps::hazardMaps
     const label n = g.nNodes();
     Gx_.assign(n, 0.0);
     Gy_.assign(n, 0.0);
-    topography.sampleGradient(g, Gx_.data(), Gy_.data());
+    nodeTerrainGradient(g, Znodes, Gx_.data(), Gy_.data());
     maxHeight_.assign(n, 0.0);
     maxSpeed_.assign(n, 0.0);
     maxIntensity_.assign(n, 0.0);

@@ -126,28 +126,6 @@ void Foam::topographyModel::sampleNodes
 }
 
 
-void Foam::topographyModel::sampleGradient
-(
-    const gridGeometry& g,
-    double* gradX,
-    double* gradY
-) const
-{
-    const gridGeometry::index nG = gridGeometry::nGhost;
-    for (label j = 0; j < g.nNodesDir[1]; ++j)
-    {
-        for (label i = 0; i < g.nNodesDir[0]; ++i)
-        {
-            const label nodei = i + j*g.nodeStride[1];
-            const vector2D grad =
-                gradient(g.nodeCoord(0, i - nG), g.nodeCoord(1, j - nG));
-            gradX[nodei] = grad.x();
-            gradY[nodei] = grad.y();
-        }
-    }
-}
-
-
 void Foam::topographyModel::meshRange
 (
     const gridGeometry& g,
