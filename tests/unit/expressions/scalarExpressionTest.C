@@ -10,10 +10,11 @@ Description
     Expressions: precedence and associativity, every function against the
     C++ standard library, the ternary of a piecewise slope, a hemispherical
     mound, the order of the variables, exact derivatives (every function
-    against its closed-form derivative, one side at kinks), parse errors
-    that point at the error, constants folded to NaN and inf under the
-    solvers' floating-point traps, and OpenMP evaluation that agrees with
-    serial evaluation bit for bit. Prints the evaluations per second of the hemisphere.
+    against its closed-form derivative, the taken branch at kinks, no trap
+    where the value is finite), parse errors that point at the error,
+    constants folded to NaN and inf under the solvers' floating-point
+    traps, and OpenMP evaluation that agrees with serial evaluation bit for
+    bit. Prints the evaluations per second of the hemisphere.
 
 \*---------------------------------------------------------------------------*/
 
@@ -90,6 +91,11 @@ std::pair<double, double> derivative
 } // End anonymous namespace
 
 
+// A derivative is a few roundings of one operation away from its closed
+// form
+constexpr double derivativeTol = 1e-14;
+
+
 TEST(scalarExpression, DerivativesMatchTheClosedForms)
 {
     // f(a) and f'(a) of every function of one argument, at x = a and,
@@ -129,7 +135,7 @@ TEST(scalarExpression, DerivativesMatchTheClosedForms)
             const auto vd = derivative(expr, a, 0, 0);
             EXPECT_EQ(vd.first, eval(expr, a)) << expr << " at " << a;
             const double exact = f.second(a);
-            EXPECT_NEAR(vd.second, exact, 1e-14*(1 + std::abs(exact)))
+            EXPECT_NEAR(vd.second, exact, derivativeTol*(1 + std::abs(exact)))
                 << expr << "' at " << a;
             const std::string chain = f.first + "(2*y - 1)";
             const double ref = 2*f.second(a);
@@ -137,7 +143,7 @@ TEST(scalarExpression, DerivativesMatchTheClosedForms)
             (
                 derivative(chain, 0, (a + 1)/2, 1).second,
                 ref,
-                1e-14*(1 + std::abs(ref))
+                derivativeTol*(1 + std::abs(ref))
             )   << chain << "' at y = " << (a + 1)/2;
             EXPECT_EQ(derivative(expr, a, 0, 1).second, 0)
                 << expr << " does not depend on y";
@@ -183,10 +189,47 @@ TEST(scalarExpression, DerivativesMatchTheClosedForms)
         const auto dX = derivative(c.expr, c.x, c.y, 0);
         const auto dY = derivative(c.expr, c.x, c.y, 1);
         EXPECT_EQ(dX.first, eval(c.expr, c.x, c.y)) << c.expr;
-        EXPECT_NEAR(dX.second, c.dx, 1e-14*(1 + std::abs(c.dx)))
+        EXPECT_NEAR(dX.second, c.dx, derivativeTol*(1 + std::abs(c.dx)))
             << "d/dx " << c.expr << " at (" << c.x << " " << c.y << ")";
-        EXPECT_NEAR(dY.second, c.dy, 1e-14*(1 + std::abs(c.dy)))
+        EXPECT_NEAR(dY.second, c.dy, derivativeTol*(1 + std::abs(c.dy)))
             << "d/dy " << c.expr << " at (" << c.x << " " << c.y << ")";
+    }
+}
+
+
+TEST(scalarExpression, DerivativesRaiseNoTrapWhereTheValueIsFinite)
+{
+    // Under the solvers' traps: where the derivative is infinite or
+    // undefined it is 0, and large or tiny values are not squared
+    const solverFpTraps traps;
+    struct case1
+    {
+        std::string expr;
+        double x, y, value, dx;
+    };
+    const double tiny = 1e-170, huge = 1e200;
+    const std::vector<case1> cases =
+    {
+        {"x^0.5", 0, 0, 0, 0},
+        {"x^0", 0, 0, 1, 0},
+        {"x^1", 0, 0, 0, 1},
+        {"x^3", 0, 0, 0, 0},
+        {"y^x", 2, 0, 0, 0},
+        {"y^x", 2, -2, 4, 0},
+        {"abs(x)", 0, 0, 0, 0},
+        {"sqrt(x)", 0, 0, 0, 0},
+        {"asin(x)", 1, 0, M_PI/2, 0},
+        {"acos(x)", -1, 0, M_PI, 0},
+        {"x/y", 1, tiny, 1/tiny, 1/tiny},
+        {"atan(x)", huge, 0, M_PI/2, 0},
+        {"atan2(y, x)", huge, huge, M_PI/4, -0.5/huge}
+    };
+    for (const case1& c : cases)
+    {
+        const auto vd = derivative(c.expr, c.x, c.y, 0);
+        EXPECT_NEAR(vd.first, c.value, relTol*std::abs(c.value)) << c.expr;
+        EXPECT_NEAR(vd.second, c.dx, derivativeTol*std::abs(c.dx))
+            << "d/dx " << c.expr << " at (" << c.x << " " << c.y << ")";
     }
 }
 

@@ -406,13 +406,17 @@ public:
 
 // v + d eps with eps^2 = 0: run on these carries the derivative along
 // with the value, by the chain rule of each operation. The comparisons
-// compare values. A zero denominator gives a zero derivative (a side taken
-// where it is not defined) so that no trap fires where the value is fine.
+// compare values. Where the derivative is infinite or undefined (a zero
+// denominator) it is 0, and no value that may overflow is squared, so that
+// no trap fires where the value and its derivative are finite.
 struct Foam::scalarExpression::dual
 {
     scalar v, d;
 
-    dual(const scalar value = 0, const scalar derivative = 0)
+    //- Uninitialised, as a scalar (run's stack is not zero-filled)
+    dual() = default;
+
+    dual(const scalar value, const scalar derivative = 0)
     :
         v(value),
         d(derivative)
@@ -439,7 +443,8 @@ struct Foam::scalarExpression::dual
     }
     friend dual operator/(const dual& b, const dual& a)
     {
-        return {b.v/a.v, ratio(b.d*a.v - b.v*a.d, a.v*a.v)};
+        const scalar q = b.v/a.v;
+        return {q, ratio(b.d - q*a.d, a.v)};
     }
 
     // Comparisons of the values
@@ -489,7 +494,10 @@ struct Foam::scalarExpression::dual
     }
     friend dual atan(const dual& a)
     {
-        return {std::atan(a.v), a.d/(1 + a.v*a.v)};
+        // 1/(1 + a^2), without squaring a large a
+        const scalar d = std::abs(a.v) <= 1
+          ? a.d/(1 + a.v*a.v) : (a.d/a.v)/(a.v + 1/a.v);
+        return {std::atan(a.v), d};
     }
     friend dual sinh(const dual& a)
     {
@@ -522,20 +530,24 @@ struct Foam::scalarExpression::dual
     // Functions of two arguments (b, a)
     friend dual pow(const dual& b, const dual& a)
     {
+        // d/db b^a = a b^(a-1): at b = 0 it is 1 for a = 1, else 0 or
+        // infinite (taken as 0); d/da b^a = b^a ln b, for b > 0 only
         const scalar p = std::pow(b.v, a.v);
-        return
-        {
-            p,
-            (b.d != 0 ? a.v*std::pow(b.v, a.v - 1)*b.d : 0)
-          + (a.d != 0 ? p*std::log(b.v)*a.d : 0)
-        };
+        const scalar dB =
+            b.d == 0 ? 0
+          : b.v != 0 ? a.v*std::pow(b.v, a.v - 1)*b.d
+          : a.v == 1 ? b.d : 0;
+        const scalar dA = (a.d != 0 && b.v > 0) ? p*std::log(b.v)*a.d : 0;
+        return {p, dB + dA};
     }
     friend dual atan2(const dual& b, const dual& a)
     {
+        // (a b' - b a')/(a^2 + b^2), without squaring
+        const scalar h = std::hypot(b.v, a.v);
         return
         {
             std::atan2(b.v, a.v),
-            ratio(a.v*b.d - b.v*a.d, a.v*a.v + b.v*b.v)
+            ratio(ratio(a.v, h)*b.d - ratio(b.v, h)*a.d, h)
         };
     }
     friend dual hypot(const dual& b, const dual& a)

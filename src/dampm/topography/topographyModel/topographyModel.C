@@ -51,7 +51,8 @@ void Foam::topographyModel::sampleNodes
     // Traps masked for the whole loop, not per node: what is not finite
     // (or too large to compute with) is found here and refused by its node
     const gridGeometry::index nG = gridGeometry::nGhost;
-    label bad = -1;
+    label bad = -1, badSlope = -1;
+    vector2D slope;
     {
         fpTrapsHeld masked;
         for (label j = 0; j < g.nNodesDir[1]; ++j)
@@ -59,12 +60,23 @@ void Foam::topographyModel::sampleNodes
             for (label i = 0; i < g.nNodesDir[0]; ++i)
             {
                 const label nodei = i + j*g.nodeStride[1];
-                const scalar z =
-                    Z(g.nodeCoord(0, i - nG), g.nodeCoord(1, j - nG));
+                const scalar x = g.nodeCoord(0, i - nG);
+                const scalar y = g.nodeCoord(1, j - nG);
+                const scalar z = Z(x, y);
                 Znodes[nodei] = z;
                 if (bad < 0 && !(std::isfinite(z) && std::abs(z) <= maxAbsZ))
                 {
                     bad = nodei;
+                }
+                const vector2D grad = gradient(x, y);
+                if
+                (
+                    badSlope < 0
+                 && !(std::isfinite(grad.x()) && std::isfinite(grad.y()))
+                )
+                {
+                    badSlope = nodei;
+                    slope = grad;
                 }
             }
         }
@@ -91,6 +103,17 @@ void Foam::topographyModel::sampleNodes
             << "; allowed: a finite Z with |Z| <= " << maxAbsZ << " m at"
             << " every node of the grid, the ghost nodes one cell outside the"
             << " mesh included"
+            << exit(FatalIOError);
+    }
+    if (badSlope >= 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << setprecision(12)
+            << "the topography " << description().c_str() << " has the"
+            << " gradient " << slope << " at the grid node "
+            << at(badSlope).c_str() << "; allowed: a finite gradient at every"
+            << " node of the grid, the ghost nodes one cell outside the mesh"
+            << " included"
             << exit(FatalIOError);
     }
 
