@@ -529,7 +529,6 @@ Foam::mpm3dFlow::mpm3dFlow
     {
         settings_.g[d] = g[d];
     }
-    settings_.plane = grid.isPlane();
     settings_.rho0 = material_->rho();
     settings_.smoothJ = material_->volumetricSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);

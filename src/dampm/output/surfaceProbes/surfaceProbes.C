@@ -11,6 +11,7 @@ License
 #include "surfaceProbes.H"
 #include "knownKeywords.H"
 #include "vector2D.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -36,9 +37,14 @@ Foam::surfaceProbes::surfaceProbes
         }
         knownKeywords::add(e.dict(), {"location"});
         const vector2D loc = e.dict().get<vector2D>("location");
+        // Finite first: an ordered comparison with NaN raises a trap
         const bool inside =
-            loc.x() >= geom.origin[0] && loc.x() <= geom.upper(0)
-         && (geom.plane || (loc.y() >= geom.origin[1] && loc.y() <= geom.upper(1)));
+            std::isfinite(loc.x()) && std::isfinite(loc.y())
+         && loc.x() >= geom.origin[0] && loc.x() <= geom.upper(0)
+         && (
+                geom.plane
+             || (loc.y() >= geom.origin[1] && loc.y() <= geom.upper(1))
+            );
         if (!inside)
         {
             FatalIOErrorInFunction(e.dict())
