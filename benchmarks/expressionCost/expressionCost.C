@@ -42,10 +42,10 @@ using namespace Foam;
 namespace
 {
 
-//- One expression in both syntaxes
+//- One expression in both syntaxes, and what it is
 struct expressionPair
 {
-    const char* use;
+    const char* name;
     const char* dampm;
     const char* openfoam;
 };
@@ -178,7 +178,7 @@ int main(int argc, char *argv[])
 
     for (const expressionPair& e : tutorialExpressions)
     {
-        const scalarExpression ours(e.dampm, vars, e.use);
+        const scalarExpression ours(e.dampm, vars, e.name);
 
         // dampm, one point at a time: what the solvers do (parse once, then
         // value() at each node or column)
@@ -272,7 +272,7 @@ int main(int argc, char *argv[])
         std::printf
         (
             "| %s | %.1f | %.0f | %.1f | %.1f | %.1f | %.2g |\n",
-            e.use, 1e9*tOurs/n, 1e9*tTheirs/nPoint,
+            e.name, 1e9*tOurs/n, 1e9*tTheirs/nPoint,
             1e9*tTheirsField/n, 1e9*tOursGrad/n, 1e9*tTheirsGrad/n, maxDiff
         );
     }
@@ -285,7 +285,7 @@ int main(int argc, char *argv[])
         {
             for (label i = 0; i < nParse; ++i)
             {
-                const scalarExpression ours(e.dampm, vars, e.use);
+                const scalarExpression ours(e.dampm, vars, e.name);
                 sink = ours.variables().size();
             }
         });
@@ -297,13 +297,7 @@ int main(int argc, char *argv[])
     }
 
     // Three typical mistakes
-    struct mistake
-    {
-        const char* what;
-        const char* dampm;
-        const char* openfoam;
-    };
-    const mistake mistakes[] =
+    const expressionPair mistakes[] =
     {
         {
             "unknown variable",
@@ -322,7 +316,7 @@ int main(int argc, char *argv[])
         }
     };
     std::printf("\n## Error messages\n");
-    for (const mistake& m : mistakes)
+    for (const expressionPair& m : mistakes)
     {
         const std::string ours = errorText([&]
         {
@@ -339,7 +333,7 @@ int main(int argc, char *argv[])
         (
             "\n### %s\n\ndampm, `%s`:\n```\n%s\n```\n"
             "v1912, `%s`:\n```\n%s\n```\n",
-            m.what, m.dampm, ours.c_str(), m.openfoam, theirs.c_str()
+            m.name, m.dampm, ours.c_str(), m.openfoam, theirs.c_str()
         );
     }
 

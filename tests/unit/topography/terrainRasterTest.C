@@ -108,6 +108,26 @@ std::string ascText
 }
 
 
+//- n samples uniform in [lo, hi), reproducible by the seed
+scalarList uniformSamples
+(
+    const label n,
+    const unsigned seed,
+    const double lo,
+    const double hi
+)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(lo, hi);
+    scalarList values(n);
+    for (scalar& v : values)
+    {
+        v = u(gen);
+    }
+    return values;
+}
+
+
 //- The header after ncols and the rows of a 3 x 2 raster
 const std::string rows2x3 =
     "nrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n4 5 6\n";
@@ -353,15 +373,9 @@ TEST(terrainRaster, GeoTiffRoundTripKeepsGeoreferenceAndProjection)
     CPLFree(wktPtr);
     OSRDestroySpatialReference(srs);
 
-    std::mt19937 gen(5);
-    std::uniform_real_distribution<double> u(1000, 2000);
     const label nx = 8;
     const label ny = 5;
-    scalarList values(nx*ny);
-    for (scalar& v : values)
-    {
-        v = u(gen);
-    }
+    scalarList values(uniformSamples(nx*ny, 5, 1000, 2000));
     values[3] = notANumber;
     const vector2D offset(X0, Y0);
     const terrainRaster nodes
@@ -405,15 +419,9 @@ TEST(terrainRaster, AsciiGridAndGeoTiffOfOneRasterReadTheSame)
     // One raster written both ways (GeoTIFF as float64) reads back as the
     // same samples and georeference: the two readers share no code but
     // must agree
-    std::mt19937 gen(13);
-    std::uniform_real_distribution<double> u(1000, 2000);
     const label nx = 7;
     const label ny = 4;
-    scalarList values(nx*ny);
-    for (scalar& v : values)
-    {
-        v = u(gen);
-    }
+    const scalarList values(uniformSamples(nx*ny, 13, 1000, 2000));
     const vector2D offset(X0 + 0.123456789, Y0 + 0.987654321);
     const terrainRaster nodes
     (
@@ -484,15 +492,9 @@ TEST(terrainRaster, GdalAsciiDriverAgreesOnValidGridsButAcceptsBadOnes)
     };
 
     // Terrain-like decimals; GDAL gives the rows north first
-    std::mt19937 gen(17);
-    std::uniform_real_distribution<double> u(1000, 1300);
     const int nx = 9;
     const int ny = 6;
-    std::vector<double> z(nx*ny);
-    for (double& v : z)
-    {
-        v = u(gen);
-    }
+    const scalarList z(uniformSamples(nx*ny, 17, 1000, 1300));
     const fileName file = writeText
     (
         "gdal.asc",
@@ -508,8 +510,8 @@ TEST(terrainRaster, GdalAsciiDriverAgreesOnValidGridsButAcceptsBadOnes)
     const terrainRaster ours(file);
     const std::vector<double> gdal64 = gdalRead(file, true);
     const std::vector<double> gdal32 = gdalRead(file, false);
-    ASSERT_EQ(gdal64.size(), z.size());
-    ASSERT_EQ(gdal32.size(), z.size());
+    ASSERT_EQ(gdal64.size(), size_t(z.size()));
+    ASSERT_EQ(gdal32.size(), size_t(z.size()));
     label nFloat32Differ = 0;
     for (int r = 0; r < ny; ++r)
     {
