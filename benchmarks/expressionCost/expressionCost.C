@@ -50,8 +50,8 @@ struct expressionPair
     const char* openfoam;
 };
 
-//- The tutorials' expressions (grep expression tutorials/); v1912 has no ^,
-//  no deg2rad(a) and no two-argument max (max(a) is the field's maximum)
+//- The tutorials' expressions (grep expression tutorials/); v1912 has no ^
+//  for scalars and no deg2rad(a), and writes the constant pi as pi()
 const expressionPair tutorialExpressions[] =
 {
     {
@@ -72,7 +72,7 @@ const expressionPair tutorialExpressions[] =
     {
         "semisphere release h",
         "sqrt(max(25 - (x-25)^2 - (y-25)^2, 0))",
-        "sqrt(pos0(25 - sqr(x-25) - sqr(y-25))*(25 - sqr(x-25) - sqr(y-25)))"
+        "sqrt(max(25 - sqr(x-25) - sqr(y-25), 0))"
     }
 };
 
@@ -312,7 +312,7 @@ int main(int argc, char *argv[])
         {
             "unknown function",
             "sqrtt(max(25 - (x-25)^2 - (y-25)^2, 0))",
-            "sqrtt(pos0(25 - sqr(x-25) - sqr(y-25)))"
+            "sqrtt(max(25 - sqr(x-25) - sqr(y-25), 0))"
         }
     };
     std::printf("\n## Error messages\n");
