@@ -10,7 +10,9 @@ Description
     terrainRaster: ESRI ASCII grids in both header forms (spaces, tabs,
     CRLF) read with the north row first; a planar terrain interpolated
     exactly with its exact gradient; local coordinates and clamping; ASCII
-    and GeoTIFF round trips; the NODATA policies; every malformed file
+    and GeoTIFF round trips, the two formats of one raster read alike, and
+    GDAL's ESRI driver agreeing on valid grids but accepting bad ones (why
+    the ESRI reader is our own); the NODATA policies; every malformed file
     refused with an error that names the file and the keyword; values that
     are not decimal numbers (hex, trailing characters), out of range or
     beyond the caller's bound refused with their line, under the solvers'
@@ -27,6 +29,7 @@ Description
 #include <gtest/gtest.h>
 #include <ogr_srs_api.h>
 #include <cpl_conv.h>
+#include <cpl_string.h>
 #include <gdal.h>
 #include <cmath>
 #include <fstream>
@@ -102,6 +105,26 @@ std::string ascText
         os  << eol;
     }
     return os.str();
+}
+
+
+//- n samples uniform in [lo, hi), reproducible by the seed
+scalarList uniformSamples
+(
+    const label n,
+    const unsigned seed,
+    const double lo,
+    const double hi
+)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<double> u(lo, hi);
+    scalarList values(n);
+    for (scalar& v : values)
+    {
+        v = u(gen);
+    }
+    return values;
 }
 
 
@@ -350,15 +373,9 @@ TEST(terrainRaster, GeoTiffRoundTripKeepsGeoreferenceAndProjection)
     CPLFree(wktPtr);
     OSRDestroySpatialReference(srs);
 
-    std::mt19937 gen(5);
-    std::uniform_real_distribution<double> u(1000, 2000);
     const label nx = 8;
     const label ny = 5;
-    scalarList values(nx*ny);
-    for (scalar& v : values)
-    {
-        v = u(gen);
-    }
+    scalarList values(uniformSamples(nx*ny, 5, 1000, 2000));
     values[3] = notANumber;
     const vector2D offset(X0, Y0);
     const terrainRaster nodes
@@ -394,6 +411,141 @@ TEST(terrainRaster, GeoTiffRoundTripKeepsGeoreferenceAndProjection)
             }
         }
     }
+}
+
+
+TEST(terrainRaster, AsciiGridAndGeoTiffOfOneRasterReadTheSame)
+{
+    // One raster written both ways (GeoTIFF as float64) reads back as the
+    // same samples and georeference: the two readers share no code but
+    // must agree
+    const label nx = 7;
+    const label ny = 4;
+    const scalarList values(uniformSamples(nx*ny, 13, 1000, 2000));
+    const vector2D offset(X0 + 0.123456789, Y0 + 0.987654321);
+    const terrainRaster nodes
+    (
+        vector2D(0.25, -0.75), 1.3, 0.7, nx, ny, values, offset
+    );
+    const fileName asc(testDir()/"agree.asc");
+    const fileName tif(testDir()/"agree.tif");
+    nodes.writeAsc(asc);
+    nodes.writeGeoTiff(tif, terrainRaster::sampleType::float64);
+
+    const terrainRaster a(asc);
+    const terrainRaster t(tif);
+    ASSERT_EQ(a.nx(), t.nx());
+    ASSERT_EQ(a.ny(), t.ny());
+    EXPECT_EQ(a.dx(), t.dx());
+    EXPECT_EQ(a.dy(), t.dy());
+    for (label k = 0; k < values.size(); ++k)
+    {
+        EXPECT_EQ(a.values()[k], t.values()[k]) << k;
+        EXPECT_EQ(a.values()[k], values[k]) << k;
+    }
+    // The GeoTIFF locates the north-west corner: its lower edge is that
+    // minus ny*dy, a few ulps of the map coordinate off the ASCII one
+    const double ulps = 4*std::numeric_limits<double>::epsilon();
+    EXPECT_EQ(a.mapLowerLeft().x(), t.mapLowerLeft().x());
+    EXPECT_NEAR(a.mapLowerLeft().y(), t.mapLowerLeft().y(), ulps*Y0);
+}
+
+
+TEST(terrainRaster, GdalAsciiDriverAgreesOnValidGridsButAcceptsBadOnes)
+{
+    // Why terrainRaster reads ESRI ASCII grids itself (doc/inputReaders.md):
+    // GDAL's AAIGrid driver, asked for Float64, reads the same samples from
+    // a valid grid (its default, Float32 once a decimal point is seen, does
+    // not), but reads 'abc' as 0 and accepts a negative cell size, which
+    // terrainRaster refuses naming the line
+    GDALAllRegister();
+    const char* const aaigrid[] = {"AAIGrid", nullptr};
+    const auto gdalRead = [&](const fileName& file, const bool float64)
+    {
+        char** options =
+            float64 ? CSLSetNameValue(nullptr, "DATATYPE", "Float64") : nullptr;
+        GDALDatasetH ds = GDALOpenEx
+        (
+            file.c_str(), GDAL_OF_RASTER, aaigrid, options, nullptr
+        );
+        CSLDestroy(options);
+        std::vector<double> v;
+        if (ds)
+        {
+            const int nx = GDALGetRasterXSize(ds);
+            const int ny = GDALGetRasterYSize(ds);
+            v.resize(size_t(nx)*ny);
+            if
+            (
+                GDALRasterIO
+                (
+                    GDALGetRasterBand(ds, 1), GF_Read, 0, 0, nx, ny, v.data(),
+                    nx, ny, GDT_Float64, 0, 0
+                ) != CE_None
+            )
+            {
+                v.clear();
+            }
+            GDALClose(ds);
+        }
+        return v;
+    };
+
+    // Terrain-like decimals; GDAL gives the rows north first
+    const int nx = 9;
+    const int ny = 6;
+    const scalarList z(uniformSamples(nx*ny, 17, 1000, 1300));
+    const fileName file = writeText
+    (
+        "gdal.asc",
+        ascText
+        (
+            {
+                {"ncols", "9"}, {"nrows", "6"}, {"xllcorner", "177873.022002"},
+                {"yllcorner", "377487.258603"}, {"cellsize", "4.997688906601"}
+            },
+            nx, ny, [&](int i, int j) { return z[i + nx*j]; }
+        )
+    );
+    const terrainRaster ours(file);
+    const std::vector<double> gdal64 = gdalRead(file, true);
+    const std::vector<double> gdal32 = gdalRead(file, false);
+    ASSERT_EQ(gdal64.size(), size_t(z.size()));
+    ASSERT_EQ(gdal32.size(), size_t(z.size()));
+    label nFloat32Differ = 0;
+    for (int r = 0; r < ny; ++r)
+    {
+        for (int i = 0; i < nx; ++i)
+        {
+            const double v = ours.value(i, ny - 1 - r);
+            EXPECT_EQ(gdal64[i + nx*r], v) << i << ' ' << r;
+            nFloat32Differ += (gdal32[i + nx*r] != v);
+        }
+    }
+    EXPECT_GT(nFloat32Differ, 0);
+
+    const std::string head =
+        "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n";
+    const fileName word = writeText("gdalWord.asc", head + "1 2\n3 abc\n");
+    EXPECT_EQ(gdalRead(word, true), std::vector<double>({1, 2, 3, 0}));
+    EXPECT_NE
+    (
+        foamIOErrorText([&]{ terrainRaster t(word); }).find("at line 7"),
+        std::string::npos
+    );
+    const fileName negative = writeText
+    (
+        "gdalNegative.asc",
+        "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize -1\n"
+        "1 2\n3 4\n"
+    );
+    EXPECT_EQ(gdalRead(negative, true).size(), 4u);
+    EXPECT_NE
+    (
+        foamIOErrorText([&]{ terrainRaster t(negative); })
+            .find("'cellsize' = -1 is invalid"),
+        std::string::npos
+    );
 }
 
 

@@ -207,6 +207,9 @@ void registerGdal()
 
 void Foam::terrainRaster::readAsc()
 {
+    // Not through GDAL's AAIGrid driver: it reads 'abc' as 0, a missing
+    // value as 0 and opens a negative cell size, and gives no line; a check
+    // of its result would parse every value again (doc/inputReaders.md)
     IFstream is(file_);
     if (!is.good())
     {
