@@ -84,7 +84,7 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::contact, [&]{ flow.contact(dt); });
         timers.run(stepTimers::G2P, [&]
         {
-            flow.gridToParticles(dt, runTime.value());
+            flow.gridToParticles(dt);
         });
         timers.countStep(flow.particles().size());
 
@@ -98,6 +98,7 @@ int main(int argc, char *argv[])
 
         timers.run(stepTimers::IO, [&]
         {
+            flow.monitorBarriers(runTime.value());
             #include "writeOutput.H"
         });
     }

@@ -48,7 +48,7 @@ Description
 #include "strictIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "mpm3dFlow.H"
-#include "terrainBarrier.H"
+#include "terrainGeometry.H"
 #include "columnsTo3D.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "handOff.H"
+#include "barrier.H"
 #include "knownKeywords.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -42,12 +43,10 @@ void Foam::handOff::readRegion
             // The ground is everywhere: it does not mark the 3D region
             continue;
         }
-        dictionary dict(e.dict());
-        if (!dict.found("contact"))
-        {
-            dict.add("contact", word("slip"));
-        }
-        region_.append(barrierModel::New(e.keyword(), dict, caseDir));
+        // The shape alone; a barrier's other keywords (contact, ...) may
+        // come with it and do not matter here
+        knownKeywords::add(e.dict(), barrier::keywords());
+        region_.append(barrierGeometry::New(e.keyword(), e.dict(), caseDir));
     }
     if (region_.empty())
     {
@@ -174,7 +173,7 @@ Foam::handOff::handOff
             << exit(FatalIOError);
     }
 
-    for (const barrierModel& b : region_)
+    for (const barrierGeometry& b : region_)
     {
         searchBox_.add(b.bounds());
     }
@@ -332,7 +331,7 @@ void Foam::handOff::describe(Ostream& os) const
     }
     os  << ") comes within " << distance_ << " m of the 3D region ("
         << regionSource_ << ":";
-    for (const barrierModel& b : region_)
+    for (const barrierGeometry& b : region_)
     {
         os  << ' ' << b.name();
     }

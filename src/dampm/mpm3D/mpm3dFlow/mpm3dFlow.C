@@ -182,8 +182,8 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         }
         const boundBox box
         (
-            barrierModel::readPoint(dict, "min"),
-            barrierModel::readPoint(dict, "max")
+            barrierGeometry::readPoint(dict, "min"),
+            barrierGeometry::readPoint(dict, "max")
         );
         const vector U = speedLimit::readVelocity(dict, vector::zero);
         const bool hydrostatic = dict.getOrDefault<bool>("hydrostatic", false);
@@ -276,13 +276,13 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         );
         if (holding >= 0)
         {
-            OStringStream barrier;
-            barriers_[holding].describeGeometry(barrier);
+            OStringStream shape;
+            barriers_[holding].geometry().describe(shape);
             FatalIOErrorInFunction(dict)
                 << nInside << " of the " << pts.size() << " particles of"
                 << " initial region " << e.keyword() << " (" << box.min()
                 << " to " << box.max() << ") would start inside barrier "
-                << barriers_[holding].name() << " (" << barrier.str().c_str()
+                << barriers_[holding].name() << " (" << shape.str().c_str()
                 << "); allowed: regions outside the barriers (move or shrink"
                 << " the region)" << exit(FatalIOError);
         }
@@ -385,7 +385,7 @@ Foam::label Foam::mpm3dFlow::barrierHolding
     forAll(barriers_, b)
     {
         boolList in;
-        barriers_[b].inside(points, in);
+        barriers_[b].geometry().inside(points, in);
         for (const bool i : in)
         {
             nInside += i;
@@ -449,13 +449,14 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
             removed += m[i];
             forAll(barriers_, b)
             {
+                barrierMonitor& monitor = barriers_[b].monitor();
                 if
                 (
-                    barriers_[b].measuresOvertopping()
-                 && barriers_[b].passed(x[0][i], x[1][i], x[2][i])
+                    monitor.measuresOvertopping()
+                 && monitor.passed(x[0][i], x[1][i], x[2][i])
                 )
                 {
-                    barriers_[b].addPassedOutflow(m[i]);
+                    monitor.addPassedOutflow(m[i]);
                 }
             }
         }
@@ -559,8 +560,8 @@ Foam::mpm3dFlow::mpm3dFlow
                 << " allowed: name { type plane|box|triSurface|terrain; ... }"
                 << exit(FatalIOError);
         }
-        barriers_.append(barrierModel::New(e.keyword(), e.dict(), caseDir));
-        barriers_.last().findContactNodes(grid.geometry(), settings_.wall);
+        barriers_.append(new barrier(e.keyword(), e.dict(), caseDir));
+        barriers_.last().findNodes(grid.geometry(), settings_.wall);
     }
 
     // Particle fields
@@ -658,7 +659,7 @@ void Foam::mpm3dFlow::writeState(dictionary& state) const
         state.set
         (
             word(barriers_[b].name() + "PassedOutflow"),
-            barriers_[b].passedOutflow()
+            barriers_[b].monitor().passedOutflow()
         );
     }
 }
@@ -672,7 +673,7 @@ void Foam::mpm3dFlow::readState(const dictionary& state)
     // A barrier added for the restart has let nothing pass yet
     forAll(barriers_, b)
     {
-        barriers_[b].setPassedOutflow
+        barriers_[b].monitor().setPassedOutflow
         (
             state.getOrDefault<scalar>
             (
@@ -739,7 +740,7 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
     else
     {
         os  << barriers_.size() << nl;
-        for (const barrierModel& b : barriers_)
+        for (const barrier& b : barriers_)
         {
             b.describe(os);
         }
@@ -844,14 +845,14 @@ void Foam::mpm3dFlow::updateGrid(const scalar dt)
 
 void Foam::mpm3dFlow::contact(const scalar dt)
 {
-    for (barrierModel& b : barriers_)
+    for (barrier& b : barriers_)
     {
         b.applyContact(nodes_, settings_.massTol, dt);
     }
 }
 
 
-void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
+void Foam::mpm3dFlow::gridToParticles(const scalar dt)
 {
     const gridGeometry& g = grid_.geometry();
     const mpm3DParticles view = kernelView();
@@ -860,7 +861,7 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
     // The start positions, for the guard of the barriers the particles can
     // reach in this step
     bool guarded = false;
-    for (barrierModel& b : barriers_)
+    for (barrier& b : barriers_)
     {
         guarded = b.guardReach(stencilNodes_) || guarded;
     }
@@ -906,12 +907,21 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt, const scalar t)
             }
         }
     );
-    for (barrierModel& b : barriers_)
+    for (barrier& b : barriers_)
     {
-        b.stopEntries(g, x0, view, dt, t);
+        b.stopEntries(g, x0, view, dt);
     }
     material_->updateStress(particles_, materialView(), dt);
     outflowMass_ += removeOutflow();
+}
+
+
+void Foam::mpm3dFlow::monitorBarriers(const scalar t)
+{
+    for (barrier& b : barriers_)
+    {
+        b.execute(nodes_, settings_.massTol, t);
+    }
 }
 
 
@@ -957,27 +967,6 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
         ? boundBox(point(-mx[1], -mx[2], -mx[3]), point(mx[4], mx[5], mx[6]))
         : boundBox(point::zero, point::zero);
     return t;
-}
-
-
-Foam::scalar Foam::mpm3dFlow::overtoppingMass(const label b) const
-{
-    const barrierModel& bar = barriers_[b];
-    if (!bar.measuresOvertopping())
-    {
-        return 0;
-    }
-    const label n = particles_.size();
-    const double* x = particles_.column(particleArrays::X);
-    const double* y = particles_.column(particleArrays::Y);
-    const double* z = particles_.column(particleArrays::Z);
-    const double* m = particles_.column(particleArrays::M);
-    double passed[1], none[1];
-    orderedSums<1, 0>(n, passed, none, [&](label i, double* s, double*)
-    {
-        s[0] += bar.passed(x[i], y[i], z[i]) ? m[i] : 0;
-    });
-    return passed[0] + bar.passedOutflow();
 }
 
 

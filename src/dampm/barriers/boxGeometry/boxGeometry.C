@@ -8,7 +8,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "boxBarrier.H"
+#include "boxGeometry.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -16,24 +16,24 @@ License
 
 namespace Foam
 {
-namespace barrierModels
+namespace barrierGeometries
 {
-    defineTypeNameAndDebug(boxBarrier, 0);
-    addToRunTimeSelectionTable(barrierModel, boxBarrier, dictionary);
+    defineTypeNameAndDebug(boxGeometry, 0);
+    addToRunTimeSelectionTable(barrierGeometry, boxGeometry, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::barrierModels::boxBarrier::boxBarrier
+Foam::barrierGeometries::boxGeometry::boxGeometry
 (
     const word& name,
     const dictionary& dict,
     const fileName& caseDir
 )
 :
-    barrierModel(name, dict, caseDir),
+    barrierGeometry(name, dict, caseDir),
     box_(readPoint("min"), readPoint("max"))
 {
     knownKeywords::add(dict, {"min", "max"});
@@ -50,7 +50,7 @@ Foam::barrierModels::boxBarrier::boxBarrier
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::barrierModels::boxBarrier::distance
+void Foam::barrierGeometries::boxGeometry::distance
 (
     const pointField& points,
     scalarField& phi,
@@ -93,7 +93,7 @@ void Foam::barrierModels::boxBarrier::distance
 }
 
 
-void Foam::barrierModels::boxBarrier::describeGeometry(Ostream& os) const
+void Foam::barrierGeometries::boxGeometry::describe(Ostream& os) const
 {
     os  << "box " << box_.min() << " to " << box_.max();
 }

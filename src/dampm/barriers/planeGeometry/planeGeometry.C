@@ -8,7 +8,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "planeBarrier.H"
+#include "planeGeometry.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -16,24 +16,24 @@ License
 
 namespace Foam
 {
-namespace barrierModels
+namespace barrierGeometries
 {
-    defineTypeNameAndDebug(planeBarrier, 0);
-    addToRunTimeSelectionTable(barrierModel, planeBarrier, dictionary);
+    defineTypeNameAndDebug(planeGeometry, 0);
+    addToRunTimeSelectionTable(barrierGeometry, planeGeometry, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::barrierModels::planeBarrier::planeBarrier
+Foam::barrierGeometries::planeGeometry::planeGeometry
 (
     const word& name,
     const dictionary& dict,
     const fileName& caseDir
 )
 :
-    barrierModel(name, dict, caseDir),
+    barrierGeometry(name, dict, caseDir),
     origin_(readPoint("point")),
     normal_(readDirection("normal"))
 {
@@ -43,7 +43,7 @@ Foam::barrierModels::planeBarrier::planeBarrier
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::barrierModels::planeBarrier::distance
+void Foam::barrierGeometries::planeGeometry::distance
 (
     const pointField& points,
     scalarField& phi,
@@ -55,7 +55,7 @@ void Foam::barrierModels::planeBarrier::distance
 }
 
 
-void Foam::barrierModels::planeBarrier::describeGeometry(Ostream& os) const
+void Foam::barrierGeometries::planeGeometry::describe(Ostream& os) const
 {
     os  << "plane through " << origin_ << " with normal " << normal_;
 }

@@ -7,7 +7,7 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    barrierModel's contact at the nodes (applyContact), with a plane as the
+    nodeContact, the contact at the nodes (apply), with a plane as the
     barrier on a grid of 0.1 x 0.15 x 0.2 m cells (barrierProbe.H):
     - a node moving into the barrier keeps the tangential velocity (slip),
       loses it (noSlip) or has it reduced by mu |v.n| (Coulomb, down to
@@ -17,7 +17,11 @@ Description
     - nodePressure: the normal force m |v.n|/dt over the node's cell seen
       along the normal, |nx| dy dz + |ny| dz dx + |nz| dx dy, for walls
       facing x, y and z and inclined ones (dx dy whatever the wall's
-      orientation before: twice too much on a wall facing x here).
+      orientation before: twice too much on a wall facing x here);
+    - on the domain's walls the node sums hold the flow's mirror images: a
+      node on one wall counts half its momentum change in the force, on two
+      a quarter, a ghost node beyond a wall none; its velocity is set all
+      the same.
 
 \*---------------------------------------------------------------------------*/
 
@@ -31,13 +35,21 @@ using namespace Foam;
 namespace
 {
 
-//- A plane through a point 0.05 m outside node (5, 4, 3) (so that the
-//  node is in contact) with unit normal n, and the contact's keywords
-std::string planeThroughNode(const vector& n, const std::string& contact)
+//- A plane through a point 0.05 m outside node (i, j, k), by default
+//  (5, 4, 3), (so that the node is in contact) with unit normal n, and the
+//  contact's keywords
+std::string planeThroughNode
+(
+    const vector& n,
+    const std::string& contact,
+    const label i = 5,
+    const label j = 4,
+    const label k = 3
+)
 {
     const gridGeometry g = probeGrid();
     const point o =
-        point(g.nodeCoord(0, 5), g.nodeCoord(1, 4), g.nodeCoord(2, 3))
+        point(g.nodeCoord(0, i), g.nodeCoord(1, j), g.nodeCoord(2, k))
       + 0.05*n;
     OStringStream os;
     os.precision(17);
@@ -52,7 +64,7 @@ constexpr double tol = 1e-14;
 } // End anonymous namespace
 
 
-TEST(barrierModel, NodeMovingInLosesItsNormalVelocityByItsContact)
+TEST(nodeContact, NodeMovingInLosesItsNormalVelocityByItsContact)
 {
     const scalar m = 2, dt = 1e-3;
     const vector n = vector(1, 2, 2)/3;
@@ -95,7 +107,7 @@ TEST(barrierModel, NodeMovingInLosesItsNormalVelocityByItsContact)
 }
 
 
-TEST(barrierModel, NodeMovingAwayIsLeftAlone)
+TEST(nodeContact, NodeMovingAwayIsLeftAlone)
 {
     const vector n = vector(-2, 1, 2)/3;
     barrierProbe probe(planeThroughNode(n, "noSlip"));
@@ -109,7 +121,7 @@ TEST(barrierModel, NodeMovingAwayIsLeftAlone)
 }
 
 
-TEST(barrierModel, NodePressureIsTheNormalForceOverTheNodesAreaOnTheWall)
+TEST(nodeContact, NodePressureIsTheNormalForceOverTheNodesAreaOnTheWall)
 {
     const gridGeometry g = probeGrid();
     const scalar dx = g.dx[0], dy = g.dx[1], dz = g.dx[2];
@@ -133,6 +145,42 @@ TEST(barrierModel, NodePressureIsTheNormalForceOverTheNodesAreaOnTheWall)
         const scalar expected = m*3/dt/area;
         EXPECT_NEAR(p, expected, tol*expected) << "normal " << n;
         EXPECT_NEAR(mag(F), m*3/dt, tol*m*3/dt) << "normal " << n;
+    }
+}
+
+
+TEST(nodeContact, NodeOnTheDomainsWallsCountsTheFlowsShareOfTheForce)
+{
+    const scalar m = 2, dt = 1e-3;
+    const vector n(1, 0, 0);
+    const vector v(-3, 0.5, 0);
+    const vector vNew(0, 0.5, 0);
+    // Walls at x min and y min
+    const bool walls[3][2] = {{true, false}, {true, false}, {false, false}};
+    const struct { label i, j; scalar share; } nodes[] =
+    {
+        {5, 4, 1},      // inside the domain
+        {0, 4, 0.5},    // on the wall x min
+        {0, 0, 0.25},   // on both walls: an edge
+        {-1, 4, 0}      // a ghost node beyond x min
+    };
+    for (const auto& node : nodes)
+    {
+        barrierProbe probe
+        (
+            planeThroughNode(n, "slip", node.i, node.j, 3),
+            fileName(DAMPM_TEST_MESHES),
+            walls
+        );
+        vector F;
+        scalar p;
+        const vector u = probe.contact(node.i, node.j, 3, m, v, dt, F, p);
+        EXPECT_LT(mag(u - vNew), tol*mag(v)) << node.i << " " << node.j;
+        EXPECT_LT
+        (
+            mag(F - node.share*m*(v - vNew)/dt),
+            tol*m*mag(v)/dt
+        ) << node.i << " " << node.j;
     }
 }
 

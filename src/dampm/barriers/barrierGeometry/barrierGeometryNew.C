@@ -8,13 +8,13 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "barrierModel.H"
+#include "barrierGeometry.H"
 #include "knownKeywords.H"
 #include "modelConstructor.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::barrierModel> Foam::barrierModel::New
+Foam::autoPtr<Foam::barrierGeometry> Foam::barrierGeometry::New
 (
     const word& name,
     const dictionary& dict,
@@ -24,9 +24,9 @@ Foam::autoPtr<Foam::barrierModel> Foam::barrierModel::New
     const word modelType(dict.get<word>("type"));
     knownKeywords::add(dict, {"type"});
 
-    return autoPtr<barrierModel>
+    return autoPtr<barrierGeometry>
     (
-        modelConstructor<barrierModel>(dict, "type", modelType)
+        modelConstructor<barrierGeometry>(dict, "type", modelType)
         (name, dict, caseDir)
     );
 }

@@ -8,7 +8,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "triSurfaceBarrier.H"
+#include "triSurfaceGeometry.H"
 #include "errorsThrown.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
@@ -21,17 +21,17 @@ License
 
 namespace Foam
 {
-namespace barrierModels
+namespace barrierGeometries
 {
-    defineTypeNameAndDebug(triSurfaceBarrier, 0);
-    addToRunTimeSelectionTable(barrierModel, triSurfaceBarrier, dictionary);
+    defineTypeNameAndDebug(triSurfaceGeometry, 0);
+    addToRunTimeSelectionTable(barrierGeometry, triSurfaceGeometry, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::barrierModels::triSurfaceBarrier::readSurface()
+void Foam::barrierGeometries::triSurfaceGeometry::readSurface()
 {
     const fileName path = caseDir_/"constant"/"triSurface"/file_;
     if (!isFile(path))
@@ -131,7 +131,7 @@ void Foam::barrierModels::triSurfaceBarrier::readSurface()
 }
 
 
-void Foam::barrierModels::triSurfaceBarrier::orient(const fileName& path)
+void Foam::barrierGeometries::triSurfaceGeometry::orient(const fileName& path)
 {
     const triSurface& surf = *surface_;
     const string fix
@@ -245,14 +245,14 @@ void Foam::barrierModels::triSurfaceBarrier::orient(const fileName& path)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::barrierModels::triSurfaceBarrier::triSurfaceBarrier
+Foam::barrierGeometries::triSurfaceGeometry::triSurfaceGeometry
 (
     const word& name,
     const dictionary& dict,
     const fileName& caseDir
 )
 :
-    barrierModel(name, dict, caseDir),
+    barrierGeometry(name, dict, caseDir),
     file_(dict.get<fileName>("file"))
 {
     knownKeywords::add(dict, {"file"});
@@ -263,13 +263,13 @@ Foam::barrierModels::triSurfaceBarrier::triSurfaceBarrier
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::boundBox Foam::barrierModels::triSurfaceBarrier::bounds() const
+Foam::boundBox Foam::barrierGeometries::triSurfaceGeometry::bounds() const
 {
     return boundBox(surface_->points());
 }
 
 
-void Foam::barrierModels::triSurfaceBarrier::distance
+void Foam::barrierGeometries::triSurfaceGeometry::distance
 (
     const pointField& points,
     scalarField& phi,
@@ -291,7 +291,7 @@ void Foam::barrierModels::triSurfaceBarrier::distance
 }
 
 
-void Foam::barrierModels::triSurfaceBarrier::inside
+void Foam::barrierGeometries::triSurfaceGeometry::inside
 (
     const pointField& points,
     boolList& in
@@ -301,7 +301,7 @@ void Foam::barrierModels::triSurfaceBarrier::inside
 }
 
 
-void Foam::barrierModels::triSurfaceBarrier::describeGeometry
+void Foam::barrierGeometries::triSurfaceGeometry::describe
 (
     Ostream& os
 ) const

@@ -8,7 +8,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "terrainBarrier.H"
+#include "terrainGeometry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOmanip.H"
 #include <vector>
@@ -17,10 +17,10 @@ License
 
 namespace Foam
 {
-namespace barrierModels
+namespace barrierGeometries
 {
-    defineTypeNameAndDebug(terrainBarrier, 0);
-    addToRunTimeSelectionTable(barrierModel, terrainBarrier, dictionary);
+    defineTypeNameAndDebug(terrainGeometry, 0);
+    addToRunTimeSelectionTable(barrierGeometry, terrainGeometry, dictionary);
 }
 }
 
@@ -41,21 +41,21 @@ const Foam::dictionary& namingTerrain(const Foam::dictionary& dict)
 } // End anonymous namespace
 
 
-Foam::barrierModels::terrainBarrier::terrainBarrier
+Foam::barrierGeometries::terrainGeometry::terrainGeometry
 (
     const word& name,
     const dictionary& dict,
     const fileName& caseDir
 )
 :
-    barrierModel(name, dict, caseDir),
+    barrierGeometry(name, dict, caseDir),
     topography_(topographyModel::New(namingTerrain(dict), caseDir))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-inline Foam::scalar Foam::barrierModels::terrainBarrier::surface
+inline Foam::scalar Foam::barrierGeometries::terrainGeometry::surface
 (
     const scalar x,
     const scalar y,
@@ -70,7 +70,7 @@ inline Foam::scalar Foam::barrierModels::terrainBarrier::surface
 }
 
 
-void Foam::barrierModels::terrainBarrier::distance
+void Foam::barrierGeometries::terrainGeometry::distance
 (
     const pointField& points,
     scalarField& phi,
@@ -95,7 +95,7 @@ void Foam::barrierModels::terrainBarrier::distance
 }
 
 
-void Foam::barrierModels::terrainBarrier::deeperThan
+void Foam::barrierGeometries::terrainGeometry::deeperThan
 (
     const pointField& points,
     const scalar depth,
@@ -120,7 +120,7 @@ void Foam::barrierModels::terrainBarrier::deeperThan
 }
 
 
-void Foam::barrierModels::terrainBarrier::checkGrid
+void Foam::barrierGeometries::terrainGeometry::checkGrid
 (
     const gridGeometry& g
 ) const
@@ -157,7 +157,7 @@ void Foam::barrierModels::terrainBarrier::checkGrid
 }
 
 
-void Foam::barrierModels::terrainBarrier::describeGeometry(Ostream& os) const
+void Foam::barrierGeometries::terrainGeometry::describe(Ostream& os) const
 {
     os  << "terrain ";
     topography_->describe(os);

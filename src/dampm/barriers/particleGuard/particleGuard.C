@@ -1,0 +1,367 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "particleGuard.H"
+#include "DynamicField.H"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The largest float not above x: a lower bound kept in single precision
+inline float floatBelow(const double x)
+{
+    const float f = float(x);
+    return double(f) > x
+        ? std::nextafter(f, -std::numeric_limits<float>::max())
+        : f;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleGuard::particleGuard
+(
+    const barrierGeometry& geometry,
+    const contactCondition& condition
+)
+:
+    geometry_(geometry),
+    condition_(condition),
+    nearLo_{0, 0, 0},
+    nearHi_{-1, -1, -1},
+    nearCellDistance_(0),
+    clearance_(0),
+    reached_(true),
+    guardDepth_(0),
+    force_(Zero)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleGuard::startSearch
+(
+    const gridGeometry& g,
+    const scalar band
+)
+{
+    // A cell that holds a point of the barrier has every corner node within
+    // a cell diagonal of it (margin: terrain's distance is approximate)
+    scalar diagonal2 = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        diagonal2 += g.varies(d) ? sqr(g.dx[d]) : 0;
+    }
+    nearCellDistance_ = 1.25*std::sqrt(diagonal2);
+    nearCell_.assign(g.nCellsTotal(), 0);
+    for (int d = 0; d < 3; ++d)
+    {
+        nearLo_[d] = g.nCells[d];
+        nearHi_[d] = -1;
+    }
+    guardDepth_ = geometry_.guardDepthCells()*g.hMin();
+    // The screen's clearance phi + guardDepth - margin; the margin covers
+    // the rounding of the distances, which grows with the coordinates
+    // (1e-10 m at 1e6 m). Nodes not visited are farther than the band from
+    // the barrier: the band bounds their distance from below
+    clearance_ = guardDepth_ - 1e-6*g.hMin();
+    nodeClearance_.clear();
+    if (geometry_.exactDistance())
+    {
+        nodeClearance_.assign(g.nNodes(), floatBelow(band + clearance_));
+    }
+}
+
+
+void Foam::particleGuard::addNode
+(
+    const gridGeometry& g,
+    const gridGeometry::index n,
+    const scalar phi
+)
+{
+    if (!nodeClearance_.empty())
+    {
+        nodeClearance_[n] = floatBelow(phi + clearance_);
+    }
+    if (phi > nearCellDistance_)
+    {
+        return;
+    }
+    // The (up to) eight cells around the node
+    gridGeometry::index ijk[3];
+    g.nodeIJK(n, ijk);
+    for (int c = 0; c < 8; ++c)
+    {
+        const gridGeometry::index ci = ijk[0] - 1 + (c & 1);
+        const gridGeometry::index cj = ijk[1] - 1 + ((c >> 1) & 1);
+        const gridGeometry::index ck = ijk[2] - 1 + ((c >> 2) & 1);
+        if
+        (
+            ci >= 0 && ci < g.nCells[0]
+         && cj >= 0 && cj < g.nCells[1]
+         && ck >= 0 && ck < g.nCells[2]
+        )
+        {
+            nearCell_[g.cellIndex(ci, cj, ck)] = 1;
+            const gridGeometry::index cell[3] = {ci, cj, ck};
+            for (int d = 0; d < 3; ++d)
+            {
+                nearLo_[d] = min(nearLo_[d], cell[d]);
+                nearHi_[d] = max(nearHi_[d], cell[d]);
+            }
+        }
+    }
+}
+
+
+void Foam::particleGuard::guardInside
+(
+    const pointField& points,
+    boolList& in
+) const
+{
+    if (guardDepth_ > 0)
+    {
+        geometry_.deeperThan(points, guardDepth_, in);
+    }
+    else
+    {
+        geometry_.inside(points, in);
+    }
+}
+
+
+bool Foam::particleGuard::mayBeDeep
+(
+    const gridGeometry& g,
+    const double x,
+    const double y,
+    const double z
+) const
+{
+    // A non-finite position has no nearest node: the exact test answers
+    if (nodeClearance_.empty() || !std::isfinite(x + y + z))
+    {
+        return true;
+    }
+    const double xyz[3] = {x, y, z};
+    gridGeometry::index ijk[3];
+    double r2 = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const double l = std::min
+        (
+            std::max(std::round(g.local(d, xyz[d])), 0.0),
+            double(g.nCells[d])
+        );
+        ijk[d] = gridGeometry::index(l);
+        r2 += sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
+    }
+    // phi >= phi_n - r: not deeper than the guard's depth while the node's
+    // clearance phi_n + guardDepth (less the margin) is at least r
+    return
+        nodeClearance_[g.nodeIndex(ijk[0], ijk[1], ijk[2])]
+      < std::sqrt(r2);
+}
+
+
+void Foam::particleGuard::markEntered
+(
+    const gridGeometry& g,
+    const mpm3DParticles& p
+)
+{
+    // In chunks: bounded scratch, and a virtual call per chunk, not per
+    // particle. Only particles in a cell the barrier may occupy are tested;
+    // each chunk keeps those inside, joined in storage order
+    constexpr label chunk = 4096;
+    const label n = p.n;
+    const label nChunks = (n + chunk - 1)/chunk;
+    List<DynamicList<label>> inside(nChunks);
+    #pragma omp parallel for schedule(dynamic) \
+        if (geometry_.threadSafeDistance())
+    for (label c = 0; c < nChunks; ++c)
+    {
+        const label first = c*chunk;
+        const label last = std::min(n, first + chunk);
+        DynamicList<label>& ids = inside[c];
+        DynamicField<point> pts;
+        for (label i = first; i < last; ++i)
+        {
+            const double x = p.x[0][i], y = p.x[1][i], z = p.x[2][i];
+            if (nearCell_[g.cellOf(x, y, z)] && mayBeDeep(g, x, y, z))
+            {
+                ids.append(i);
+                pts.append(point(x, y, z));
+            }
+        }
+        if (ids.empty())
+        {
+            continue;
+        }
+        boolList in;
+        guardInside(pts, in);
+        label m = 0;
+        forAll(ids, k)
+        {
+            if (in[k])
+            {
+                ids[m++] = ids[k];
+            }
+        }
+        ids.resize(m);
+    }
+    for (const DynamicList<label>& ids : inside)
+    {
+        candidates_.insert(candidates_.end(), ids.begin(), ids.end());
+    }
+}
+
+
+bool Foam::particleGuard::guardReach(const nodeBox& particleNodes)
+{
+    // The particles lie between the box's first and last nodes; the cells
+    // they can reach, two cells further
+    reached_ = !particleNodes.empty() && nearLo_[0] <= nearHi_[0];
+    for (int d = 0; d < 3 && reached_; ++d)
+    {
+        const gridGeometry::index first =
+            particleNodes.lo[d] - gridGeometry::nGhost - 2;
+        const gridGeometry::index last =
+            particleNodes.hi[d] - 1 - gridGeometry::nGhost + 2;
+        reached_ = nearLo_[d] <= last && nearHi_[d] + 1 >= first;
+    }
+    return reached_;
+}
+
+
+Foam::label Foam::particleGuard::stopEntries
+(
+    const gridGeometry& g,
+    const double* const x0[3],
+    const mpm3DParticles& p,
+    const double dt
+)
+{
+    // Candidates: the particles that end the step inside the barrier
+    // (beyond the guard's depth), then those of them that were outside at
+    // the start
+    candidates_.clear();
+    if (reached_)
+    {
+        markEntered(g, p);
+    }
+    label nc = label(candidates_.size());
+    double F[3] = {0, 0, 0};
+    pointField a, b;
+    if (nc)
+    {
+        boolList in;
+        a.setSize(nc);
+        b.setSize(nc);
+        forAll(a, c)
+        {
+            const label i = candidates_[c];
+            a[c] = point(x0[0][i], x0[1][i], x0[2][i]);
+            b[c] = point(p.x[0][i], p.x[1][i], p.x[2][i]);
+        }
+        guardInside(a, in);
+        label m = 0;
+        forAll(a, c)
+        {
+            if (!in[c])
+            {
+                candidates_[m] = candidates_[c];
+                a[m] = a[c];
+                b[m] = b[c];
+                ++m;
+            }
+        }
+        nc = m;
+        candidates_.resize(nc);
+        a.setSize(nc);
+        b.setSize(nc);
+    }
+    if (nc)
+    {
+        // Where each path entered: bisection between the start (outside,
+        // a) and the end (inside, b), to 2^-30 of the step's move
+        const pointField end(b);
+        pointField mid(nc);
+        boolList in;
+        for (int iter = 0; iter < 30; ++iter)
+        {
+            forAll(mid, c)
+            {
+                mid[c] = 0.5*(a[c] + b[c]);
+            }
+            guardInside(mid, in);
+            forAll(mid, c)
+            {
+                (in[c] ? b[c] : a[c]) = mid[c];
+            }
+        }
+
+        // The entered face's normal, at the point just outside it; the end
+        // point projected on that face's tangent plane keeps the motion
+        // along the face (exact on plane faces)
+        scalarField phi;
+        vectorField normal;
+        geometry_.distance(a, phi, normal);
+        if (g.plane)
+        {
+            barrierGeometry::planeNormals(normal);
+        }
+        pointField onFace(nc);
+        forAll(onFace, c)
+        {
+            onFace[c] = end[c] + ((a[c] - end[c]) & normal[c])*normal[c];
+        }
+        guardInside(onFace, in);
+
+        // In storage order: the same force on any number of threads
+        forAll(onFace, c)
+        {
+            const label i = candidates_[c];
+            const point& x = in[c] ? a[c] : onFace[c];
+            double v[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
+            const double nrm[3] = {normal[c].x(), normal[c].y(), normal[c].z()};
+            const double vn = v[0]*nrm[0] + v[1]*nrm[1] + v[2]*nrm[2];
+            if (vn < 0)
+            {
+                condition_.apply(nrm, vn, v);
+            }
+            const double k = p.m[i]/dt;
+            for (int d = 0; d < 3; ++d)
+            {
+                F[d] += k*(p.u[d][i] - v[d]);
+                p.u[d][i] = v[d];
+                p.x[d][i] = x[d];
+            }
+        }
+    }
+
+    // Until the next guardReach, check every particle (fail safe)
+    reached_ = true;
+
+    force_ = vector(F[0], F[1], F[2]);
+    return nc;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,219 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    particleGuard, the particles' last guard (stopEntries), at each
+    geometry on a grid of 0.1 x 0.15 x 0.2 m cells (barrierProbe.H):
+    - box from (0.42 0.3 0.2) to (0.58 0.9 0.8): a particle entering
+      through a face is put back on that face, with its velocity into it
+      removed (slip); and a wall thinner than the grid's nodes (no node
+      inside, 4 cm between the node planes 0.5 and 0.6) holds by the guard
+      alone;
+    - inclined plane (normal (1 -2 2)): a particle that enters in a step is
+      put back on the plane, at its end point projected along n (to 2^-30
+      of its move: the bisection), and loses its velocity into the plane by
+      the contact condition (slip, Coulomb); the force is the momentum
+      taken, m (u - u_new)/dt. Particles that start inside, or end
+      outside, are left alone;
+    - terrain: the guard acts half a cell (of the smallest cell size) below
+      the surface: a particle that dips less deep is left to the node
+      contact, one that goes deeper is put back at that depth, along the
+      normal, and loses its velocity into the terrain;
+    - triSurface (the box of surfaceCase.H): a particle entering through
+      the top face is put back on it and loses its velocity into it (slip;
+      Coulomb with mu = 0.1 halves its 0.2 m/s along the face against
+      1 m/s into it).
+
+\*---------------------------------------------------------------------------*/
+
+#include "barrierProbe.H"
+#include "surfaceCase.H"
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace Foam;
+
+namespace
+{
+
+const std::string boxWall
+(
+    "type box; min (0.42 0.3 0.2); max (0.58 0.9 0.8); contact slip;"
+);
+
+//- The inclined plane: a point, its unit normal and a unit vector along it
+const point o(0.43, 0.61, 0.55);
+const vector np = vector(1, -2, 2)/3;
+const vector t = vector(2, 2, 1)/3;
+
+std::string inclinedPlane(const std::string& contact)
+{
+    return "type plane; point (0.43 0.61 0.55); normal (1 -2 2); contact "
+      + contact + ";";
+}
+
+//- The terrain Z = 0.3 + 0.2 x - 0.1 y and its unit normal
+std::string terrain(const std::string& Z)
+{
+    return "type terrain; topography expression; expressionCoeffs { Z \""
+      + Z + "\"; } contact slip;";
+}
+
+const double norm = std::sqrt(1 + 0.04 + 0.01);
+const vector nt = vector(-0.2, 0.1, 1)/norm;
+
+} // End anonymous namespace
+
+
+TEST(particleGuard, EnteringParticleStopsOnTheBoxFaceItCrossed)
+{
+    barrierProbe probe(boxWall);
+    const point x0(0.38, 0.6, 0.5), x1(0.45, 0.62, 0.51);
+    point x = x1;
+    vector u(2, 0.5, 0.1), F;
+    EXPECT_TRUE(probe.entry(x0, x, u, 0.01, 1e-3, F));
+    // Bisection to 2^-30 of the move
+    EXPECT_LT(mag(x - point(0.42, 0.62, 0.51)), 1e-9*mag(x1 - x0));
+    EXPECT_GE(probe.distance(x), 0);
+    EXPECT_EQ(u, vector(0, 0.5, 0.1));
+    EXPECT_LT(mag(F - vector(0.01*2/1e-3, 0, 0)), 1e-12);
+}
+
+
+TEST(particleGuard, WallThinnerThanTheNodesHoldsByTheGuard)
+{
+    barrierProbe probe
+    (
+        "type box; min (0.52 0.3 0.2); max (0.56 0.9 0.8); contact slip;"
+    );
+    // No node inside: no node contact, no pressure
+    vector F;
+    scalar p;
+    const vector v(-1, 0, 0);
+    for (const label i : {5, 6})
+    {
+        EXPECT_EQ(probe.contact(i, 4, 2, 1, v, 1e-3, F, p), v);
+        EXPECT_EQ(p, 0);
+    }
+    const point x0(0.58, 0.6, 0.5), x1(0.54, 0.6, 0.5);
+    point x = x1;
+    vector u(-3, 0, 0.2);
+    EXPECT_TRUE(probe.entry(x0, x, u, 0.01, 1e-3, F));
+    EXPECT_LT(mag(x - point(0.56, 0.6, 0.5)), 1e-9*mag(x1 - x0));
+    EXPECT_EQ(u, vector(0, 0, 0.2));
+}
+
+
+TEST(particleGuard, EnteringParticleStopsOnThePlane)
+{
+    const scalar m = 0.01, dt = 1e-3;
+    const point x0 = o + 0.02*np - 0.03*t;
+    const point x1 = o - 0.03*np + 0.01*t;
+    const vector u = -2*np + t;
+    // Bisection to 2^-30 of the move
+    const scalar tol = 1e-9*mag(x1 - x0);
+
+    for (const auto& c : {std::make_pair(word("slip"), 0.0),
+         std::make_pair(word("Coulomb"), 0.2)})
+    {
+        barrierProbe probe
+        (
+            inclinedPlane(c.first + "; frictionCoefficient 0.2")
+        );
+        point x = x1;
+        vector v = u, F;
+        EXPECT_TRUE(probe.entry(x0, x, v, m, dt, F)) << c.first;
+        EXPECT_LT(mag(x - (x1 + 0.03*np)), tol) << c.first;
+        EXPECT_GE(probe.distance(x), 0) << c.first;
+        const vector expected = contactVelocity(u, np, c.first, c.second);
+        EXPECT_LT(mag(v - expected), 1e-15) << c.first;
+        EXPECT_LT(mag(F - m*(u - expected)/dt), 1e-12) << c.first;
+    }
+    // Coulomb's worked value: 1 m/s along, 2 m/s into it, mu 0.2
+    EXPECT_LT(mag(contactVelocity(u, np, "Coulomb", 0.2) - 0.6*t), 1e-15);
+}
+
+
+TEST(particleGuard, ParticlesThatDoNotEnterAreLeftAlone)
+{
+    barrierProbe probe(inclinedPlane("noSlip"));
+    const vector u = -2*np + t;
+    // Inside at the start; outside at the end
+    const std::pair<point, point> moves[] =
+    {
+        {o - 0.01*np, o - 0.04*np + 0.01*t},
+        {o + 0.05*np, o + 0.01*np + 0.01*t}
+    };
+    for (const auto& move : moves)
+    {
+        point x = move.second;
+        vector v = u, F;
+        EXPECT_FALSE(probe.entry(move.first, x, v, 0.01, 1e-3, F));
+        EXPECT_EQ(x, move.second);
+        EXPECT_EQ(v, u);
+        EXPECT_EQ(F, vector(Zero));
+    }
+}
+
+
+TEST(particleGuard, TerrainGuardStopsParticlesHalfACellBelowTheSurface)
+{
+    barrierProbe probe(terrain("0.3 + 0.2*x - 0.1*y"));
+    const scalar depth = 0.5*probe.grid().hMin();
+    const point s(0.5, 0.6, 0.3 + 0.2*0.5 - 0.1*0.6);
+    const vector along(0.1, 0, 0.02);
+    const vector u = -nt + vector(0.5, 0, 0.1);
+
+    // Half as deep: not stopped
+    point x = s - 0.5*depth*nt + along;
+    vector v = u, F;
+    EXPECT_FALSE(probe.entry(s + 0.01*nt, x, v, 0.01, 1e-3, F));
+    EXPECT_EQ(v, u);
+
+    // Twice as deep: back at the guard's depth, along n
+    const point x0 = s + 0.01*nt, x1 = s - 2*depth*nt + along;
+    x = x1;
+    EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F));
+    // Bisection to 2^-30 of the move, and the terrain's round-off
+    const scalar tol = 1e-9*mag(x1 - x0) + 1e-12;
+    EXPECT_LT(mag(x - (x1 + depth*nt)), tol);
+    EXPECT_NEAR(probe.distance(x), -depth, tol);
+    EXPECT_LT(mag(v - contactVelocity(u, nt, "slip")), 1e-12);
+}
+
+
+TEST(particleGuard, EnteringParticleStopsOnTheSurfaceFaceItCrossed)
+{
+    const surfaceCase surfaces;
+    const point x0(0.5, 0.55, 0.95), x1(0.5, 0.57, 0.85);
+    const vector u(0, 0.2, -1);
+    const std::pair<std::string, vector> contacts[] =
+    {
+        {"slip", vector(0, 0.2, 0)},
+        {"Coulomb; frictionCoefficient 0.1", vector(0, 0.1, 0)}
+    };
+    for (const auto& c : contacts)
+    {
+        barrierProbe probe
+        (
+            "type triSurface; file box.stl; contact " + c.first + ";",
+            surfaces.dir()
+        );
+        point x = x1;
+        vector v = u, F;
+        EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F)) << c.first;
+        // Bisection to 2^-30 of the move
+        EXPECT_LT(mag(x - point(0.5, 0.57, 0.875)), 1e-9*mag(x1 - x0))
+            << c.first;
+        EXPECT_LT(mag(v - c.second), 1e-15) << c.first;
+        EXPECT_LT(mag(F - 0.01*(u - c.second)/1e-3), 1e-12) << c.first;
+    }
+}
+
+
+// ************************************************************************* //
