@@ -155,7 +155,7 @@ TEST(membraneElements, HenckyCentreDeflectionConvergesToSeries)
     double b0 = 0;
     const double exact = a*std::cbrt(q*a/(E*h))*henckyCentre(0.3, b0);
 
-    const label rings[3] = {6, 12, 24};
+    const label rings[3] = {4, 8, 16};
     double w[3];
     for (label k = 0; k < 3; ++k)
     {
@@ -172,10 +172,15 @@ TEST(membraneElements, HenckyCentreDeflectionConvergesToSeries)
         << "    observed order " << order << " (self-convergence), "
         << orderToSeries << " (against the series)" << std::endl;
 
-    constexpr double tol = 3e-2;    // the brief; O(dx^2) on 24 rings
+    // Measured: errors -1.4e-3, -2.1e-4, -3.7e-5, orders 2.7 and 2.5. On
+    // 32 rings the error stays -3.5e-5: Foppl's small rotations, not the
+    // mesh (it is -6e-6 at a tenth of the load, ~ (w0/a)^2)
+    constexpr double tol = 3e-2;    // required of a membrane model
+    constexpr double tight = 2e-4;  // what it does on 16 rings
     EXPECT_NEAR(w[2], exact, tol*exact);
-    EXPECT_LT(std::abs(w[2] - exact), std::abs(w[0] - exact));
-    EXPECT_GT(order, 1.5);          // linear triangles: O(dx^2)
+    EXPECT_NEAR(w[2], exact, tight*exact);
+    EXPECT_GT(order, 1.8);          // linear triangles: at least O(dx^2)
+    EXPECT_GT(orderToSeries, 1.8);
 }
 
 

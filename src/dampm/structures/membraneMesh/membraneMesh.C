@@ -11,6 +11,7 @@ License
 #include "membraneMesh.H"
 #include "structureInput.H"
 #include "triSurface.H"
+#include "STLcheck.H"
 #include "Enum.H"
 #include "FlatOutput.H"
 #include "OSspecific.H"
@@ -77,7 +78,16 @@ void Foam::membraneMesh::readSTL(const fileName& file, const dictionary& dict)
         FatalIOErrorInFunction(dict)
             << "file " << file << " not found" << exit(FatalIOError);
     }
-    const triSurface surf(file);
+    // Checked first: OpenFOAM's STL scanner exits the process on some
+    // broken files (STLcheck)
+    const STLcheck check(file);
+    if (!check.valid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "file " << file << " is not a valid STL file: "
+            << check.error().c_str() << exit(FatalIOError);
+    }
+    const triSurface surf(file, word(check.binary() ? "stlb" : "stl"));
     points_ = surf.points();
     for (const labelledTri& tri : surf)
     {
