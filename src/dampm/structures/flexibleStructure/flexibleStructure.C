@@ -195,11 +195,6 @@ Foam::flexibleStructure::flexibleStructure
     const dictionary& dict,
     const fileName& caseDir
 )
-:
-    alpha_(0),
-    beta_(0),
-    dtStable_(0),
-    time_(0)
 {
     if (dict.get<word>("type") == "membrane")
     {
@@ -218,11 +213,6 @@ Foam::flexibleStructure::flexibleStructure
     const dictionary& dict,
     const membraneMesh& mesh
 )
-:
-    alpha_(0),
-    beta_(0),
-    dtStable_(0),
-    time_(0)
 {
     read(dict, &mesh);
 }
