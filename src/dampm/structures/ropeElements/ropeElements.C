@@ -199,7 +199,9 @@ double Foam::ropeElements::addInternalForces
         Ne = std::max(Ne, 0.0);
         energy += 0.5*Ne*Ne/k;
 
-        const double t[3] = {d[0]/l, d[1]/l, d[2]/l};
+        // Coincident ends (a rope folded onto itself) pull nowhere
+        const double il = l > 0 ? 1/l : 0;
+        const double t[3] = {d[0]*il, d[1]*il, d[2]*il};
         double N = Ne;
         if (Ne > 0 && beta > 0)
         {
