@@ -14,7 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "transfers.H"
+#include "particleTransfers.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
 #include <random>
@@ -71,6 +71,26 @@ particleArrays makeParticles(const gridGeometry& g, const int dim)
     return p;
 }
 
+// P2G of a particleArrays sorted by cell; gradU -1 for PIC
+template<int Dim, class Kernel>
+void particlesToGrid
+(
+    const gridGeometry& g,
+    const scatterSchedule& schedule,
+    const Kernel& kernel,
+    particleArrays& p,
+    const label gradU,
+    double* mass,
+    double* const mom[Dim]
+)
+{
+    particlesToGridMomentum<Dim>
+    (
+        g, schedule, kernel, p.stencilNodes(g), p.cellStart().data(),
+        affineColumnsOf<Dim>(p, gradU), mass, mom
+    );
+}
+
 // Linear field v = a + B x, B[a][b] = dv_a/dx_b
 const double A[3] = {1.5, -0.75, 0.3};
 const double B[3][3] = {{0.2, -0.7, 0.4}, {1.1, 0.05, -0.3}, {-0.6, 0.9, 0.25}};
@@ -123,7 +143,7 @@ void checkLinearFieldRoundTrip(const Kernel& kernel, const bool linear)
     }
 
     nodeArrays<Dim> n(g);
-    particlesToGridMomentum<Dim>
+    particlesToGrid<Dim>
     (
         g, schedule, kernel, p, linear ? gradU : -1, n.mass.data(), n.momPtr
     );
@@ -201,7 +221,7 @@ void checkConservation(const Kernel& kernel)
         }
     }
     nodeArrays<Dim> n(g);
-    particlesToGridMomentum<Dim>
+    particlesToGrid<Dim>
     (
         g, schedule, kernel, p, gradU, n.mass.data(), n.momPtr
     );
@@ -241,12 +261,12 @@ void checkThreadIndependence(const Kernel& kernel)
     const int maxThreads = omp_get_max_threads();
     nodeArrays<Dim> one(g), two(g);
     omp_set_num_threads(1);
-    particlesToGridMomentum<Dim>
+    particlesToGrid<Dim>
     (
         g, schedule, kernel, p, -1, one.mass.data(), one.momPtr
     );
     omp_set_num_threads(2);
-    particlesToGridMomentum<Dim>
+    particlesToGrid<Dim>
     (
         g, schedule, kernel, p, -1, two.mass.data(), two.momPtr
     );
@@ -353,15 +373,15 @@ TEST(transfers, StaleBinningWithinTheScheduleReachStaysRaceFreeAndConservative)
         }
         omp_set_num_threads(1);
         dim == 2
-          ? particlesToGridMomentum<2>(g, schedule, quadraticBSplineKernel(),
+          ? particlesToGrid<2>(g, schedule, quadraticBSplineKernel(),
                 p, -1, m1.data(), mom1)
-          : particlesToGridMomentum<3>(g, schedule, quadraticBSplineKernel(),
+          : particlesToGrid<3>(g, schedule, quadraticBSplineKernel(),
                 p, -1, m1.data(), mom1);
         omp_set_num_threads(2);
         dim == 2
-          ? particlesToGridMomentum<2>(g, schedule, quadraticBSplineKernel(),
+          ? particlesToGrid<2>(g, schedule, quadraticBSplineKernel(),
                 p, -1, m2.data(), mom2)
-          : particlesToGridMomentum<3>(g, schedule, quadraticBSplineKernel(),
+          : particlesToGrid<3>(g, schedule, quadraticBSplineKernel(),
                 p, -1, m2.data(), mom2);
         omp_set_num_threads(maxThreads);
         EXPECT_TRUE(m1 == m2);

@@ -9,7 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bareTransport.H"
-#include "transfers.H"
+#include "particleTransfers.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 

@@ -12,7 +12,7 @@ License
 #include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
-#include "transfers.H"
+#include "particleTransfers.H"
 #include "particleCloudIO.H"
 #include "particleMemory.H"
 

@@ -1,0 +1,441 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    mpm3DTransfers and mpm3DSmoothing, stage by stage against closed forms:
+    the affine momentum at every node of a stencil, P2G's conservation of
+    mass and momentum, the internal force of a uniform stress (zero at the
+    interior nodes, its first moment the total -V sigma), G2P of a linear
+    velocity field, and the volume change of a body at rest.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpm3DKernels.H"
+#include "shapeKernels.H"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+
+using namespace Foam;
+
+namespace
+{
+
+typedef gridGeometry::index gridIndex;
+typedef quadraticBSplineKernel kernel3;
+
+// 10 x 8 x 9 cells of unequal sizes (an axis mixed up shows)
+gridGeometry box()
+{
+    gridGeometry g;
+    g.origin[0] = -0.3;
+    g.origin[1] = 0.2;
+    g.origin[2] = 0;
+    g.dx[0] = 0.1;
+    g.dx[1] = 0.12;
+    g.dx[2] = 0.09;
+    g.nCells[0] = 10;
+    g.nCells[1] = 8;
+    g.nCells[2] = 9;
+    g.finalise();
+    return g;
+}
+
+// The cells [lo, hi) per axis that hold particles
+constexpr gridIndex filledLo[3] = {2, 1, 2};
+constexpr gridIndex filledHi[3] = {8, 7, 7};
+
+// Particle columns stored cell by cell (so cellStart bins them), n^3 per
+// filled cell: a regular lattice, or jittered within the lattice cells
+struct testParticles
+{
+    std::vector<double> x[3], u[3], m, V, C[9], sigma[6], J, div, vGrid[3];
+    std::vector<gridIndex> cellStart;
+
+    testParticles(const gridGeometry& g, const int n, std::mt19937* gen)
+    {
+        std::uniform_real_distribution<double> jitter(-0.4, 0.4);
+        cellStart.push_back(0);
+        for (gridIndex k = 0; k < g.nCells[2]; ++k)
+        {
+            for (gridIndex j = 0; j < g.nCells[1]; ++j)
+            {
+                for (gridIndex i = 0; i < g.nCells[0]; ++i)
+                {
+                    const gridIndex c[3] = {i, j, k};
+                    bool filled = true;
+                    for (int d = 0; d < 3; ++d)
+                    {
+                        filled = filled
+                            && c[d] >= filledLo[d] && c[d] < filledHi[d];
+                    }
+                    for (int p = 0; filled && p < n*n*n; ++p)
+                    {
+                        const int l[3] = {p % n, (p/n) % n, p/(n*n)};
+                        for (int d = 0; d < 3; ++d)
+                        {
+                            const double s =
+                                (l[d] + 0.5 + (gen ? jitter(*gen) : 0))/n;
+                            x[d].push_back
+                            (
+                                g.origin[d] + (c[d] + s)*g.dx[d]
+                            );
+                        }
+                        m.push_back(gen ? 1 + jitter(*gen) : 1);
+                        V.push_back(g.dx[0]*g.dx[1]*g.dx[2]/(n*n*n));
+                    }
+                    cellStart.push_back(gridIndex(m.size()));
+                }
+            }
+        }
+        const size_t np = m.size();
+        for (std::vector<double>* a :
+            {&u[0], &u[1], &u[2], &J, &div, &vGrid[0], &vGrid[1], &vGrid[2]})
+        {
+            a->assign(np, 0.0);
+        }
+        for (int c = 0; c < 9; ++c)
+        {
+            C[c].assign(np, 0.0);
+        }
+        for (int c = 0; c < 6; ++c)
+        {
+            sigma[c].assign(np, 0.0);
+        }
+    }
+
+    mpm3DParticles view()
+    {
+        mpm3DParticles p;
+        p.n = gridIndex(m.size());
+        for (int d = 0; d < 3; ++d)
+        {
+            p.x[d] = x[d].data();
+            p.u[d] = u[d].data();
+            p.vGrid[d] = vGrid[d].data();
+        }
+        p.m = m.data();
+        p.V = V.data();
+        for (int c = 0; c < 9; ++c)
+        {
+            p.C[c] = C[c].data();
+        }
+        for (int c = 0; c < 6; ++c)
+        {
+            p.sigma[c] = sigma[c].data();
+        }
+        p.J = J.data();
+        p.div = div.data();
+        return p;
+    }
+};
+
+// P2G over the whole grid, from cleared nodes
+void p2g
+(
+    const gridGeometry& g,
+    testParticles& tp,
+    const mpm3DSettings& set,
+    mpm3DGrid& grid
+)
+{
+    grid.resize(g.nNodes());
+    const scatterSchedule schedule(g);
+    particlesToGrid3D
+    (
+        g, schedule, kernel3(), g.allNodes(), tp.cellStart.data(),
+        tp.view(), set, grid
+    );
+}
+
+// Node position per axis [m]
+void nodePosition(const gridGeometry& g, const gridIndex n, double xi[3])
+{
+    gridIndex ijk[3];
+    g.nodeIJK(n, ijk);
+    for (int d = 0; d < 3; ++d)
+    {
+        xi[d] = g.nodeCoord(d, ijk[d]);
+    }
+}
+
+} // End anonymous namespace
+
+
+// The momentum stage alone: q0 + a A + b B + c C at node (a, b, c) of a
+// stencil is m v + m C (x_i - x_p), for jittered particles and random v, C
+TEST(mpm3DTransfers, AffineMomentumIsMomentumAboutEachNode)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-2, 2);
+    testParticles tp(g, 2, &gen);
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            tp.u[k][i] = u(gen);
+        }
+        for (int c = 0; c < 9; ++c)
+        {
+            tp.C[c][i] = u(gen);
+        }
+    }
+    const mpm3DParticles p = tp.view();
+    // Round-off of sums of a few terms of order 2 m/s
+    constexpr double tol = 1e-13;
+    double worst = 0;
+    for (gridIndex i = 0; i < p.n; ++i)
+    {
+        const stencil<3, kernel3> s
+        (
+            g, kernel3(), p.x[0][i], p.x[1][i], p.x[2][i]
+        );
+        const affineMomentum3D q = affineMomentum(s, p, i, true);
+        for (int c = 0; c < 3; ++c)
+        {
+            for (int b = 0; b < 3; ++b)
+            {
+                for (int a = 0; a < 3; ++a)
+                {
+                    const double r[3] =
+                    {
+                        s.r0[0] + a*g.dx[0],
+                        s.r0[1] + b*g.dx[1],
+                        s.r0[2] + c*g.dx[2]
+                    };
+                    for (int k = 0; k < 3; ++k)
+                    {
+                        double exact = p.u[k][i];
+                        for (int l = 0; l < 3; ++l)
+                        {
+                            exact += p.C[3*k + l][i]*r[l];
+                        }
+                        exact *= p.m[i];
+                        const double stage =
+                            q.q0[k] + a*q.A[k] + b*q.B[k] + c*q.C[k];
+                        worst = std::max(worst, std::abs(stage - exact));
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_LE(worst, tol);
+}
+
+
+// P2G keeps mass and momentum to round-off: partition of unity, and the
+// affine part adds nothing in sum (sum_i N_i (x_i - x_p) = 0)
+TEST(mpm3DTransfers, P2GConservesMassAndMomentum)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(-3, 3);
+    testParticles tp(g, 2, &gen);
+    double mP = 0, momP[3] = {0, 0, 0};
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        mP += tp.m[i];
+        for (int k = 0; k < 3; ++k)
+        {
+            tp.u[k][i] = u(gen);
+            momP[k] += tp.m[i]*tp.u[k][i];
+        }
+        for (int c = 0; c < 9; ++c)
+        {
+            tp.C[c][i] = u(gen);
+        }
+    }
+    mpm3DGrid grid;
+    p2g(g, tp, mpm3DSettings(), grid);
+
+    double mG = 0, momG[3] = {0, 0, 0};
+    for (gridIndex n = 0; n < g.nNodes(); ++n)
+    {
+        mG += grid.mass[n];
+        momG[0] += grid.px[n];
+        momG[1] += grid.py[n];
+        momG[2] += grid.pz[n];
+    }
+    // Round-off of sums over 1440 particles of 27 nodes each
+    constexpr double tol = 1e-12;
+    EXPECT_NEAR(mG, mP, tol*mP);
+    for (int k = 0; k < 3; ++k)
+    {
+        EXPECT_NEAR(momG[k], momP[k], tol*3*mP) << "component " << k;
+    }
+}
+
+
+// A uniform stress in a block of a regular lattice: the internal force
+// -sum V sigma grad N vanishes at every node whose support lies inside the
+// block (the lattice is symmetric about the node, grad N odd), sums to
+// zero over the grid, and its first moment is the block's total:
+// sum_i f_i,a x_i,b = -sigma_ab sum V (linear completeness). The force
+// sits on the block's surface: its traction.
+TEST(mpm3DTransfers, UniformStressPushesOnlyOnTheSurface)
+{
+    const gridGeometry g = box();
+    testParticles tp(g, 2, nullptr);
+    const double sigma[6] = {-3e4, 1e3, -2e3, -5e4, 4e3, -4e4};
+    double Vtotal = 0;
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        for (int c = 0; c < 6; ++c)
+        {
+            tp.sigma[c][i] = sigma[c];
+        }
+        Vtotal += tp.V[i];
+    }
+    mpm3DGrid grid;
+    p2g(g, tp, mpm3DSettings(), grid);
+
+    // Force scale of one node: |sigma| times a cell face
+    const double fScale = 5e4*g.dx[0]*g.dx[1];
+    // Round-off of sums of 216 terms of that size
+    constexpr double tol = 1e-12;
+    const double full[3][3] =
+    {
+        {sigma[0], sigma[1], sigma[2]},
+        {sigma[1], sigma[3], sigma[4]},
+        {sigma[2], sigma[4], sigma[5]}
+    };
+    const double* const f[3] = {grid.fx.data(), grid.fy.data(), grid.fz.data()};
+    double sum[3] = {0, 0, 0}, moment[3][3] = {};
+    double worstInterior = 0, largest = 0;
+    gridIndex nInterior = 0;
+    for (gridIndex n = 0; n < g.nNodes(); ++n)
+    {
+        gridIndex ijk[3];
+        g.nodeIJK(n, ijk);
+        double xi[3];
+        nodePosition(g, n, xi);
+        // The B-spline's support, 3 cells, inside the filled cells
+        bool interior = true;
+        for (int d = 0; d < 3; ++d)
+        {
+            interior = interior
+                && ijk[d] - 1.5 >= filledLo[d] && ijk[d] + 1.5 <= filledHi[d];
+        }
+        nInterior += interior;
+        for (int a = 0; a < 3; ++a)
+        {
+            sum[a] += f[a][n];
+            largest = std::max(largest, std::abs(f[a][n]));
+            if (interior)
+            {
+                worstInterior = std::max(worstInterior, std::abs(f[a][n]));
+            }
+            for (int b = 0; b < 3; ++b)
+            {
+                moment[a][b] += f[a][n]*xi[b];
+            }
+        }
+    }
+    ASSERT_GT(nInterior, 0);
+    EXPECT_LE(worstInterior, tol*fScale);
+    EXPECT_GT(largest, 0.1*fScale) << "no traction on the surface";
+    for (int a = 0; a < 3; ++a)
+    {
+        EXPECT_NEAR(sum[a], 0, tol*fScale) << "component " << a;
+        for (int b = 0; b < 3; ++b)
+        {
+            EXPECT_NEAR(moment[a][b], -full[a][b]*Vtotal, tol*5e4*Vtotal)
+                << "component " << a << b;
+        }
+    }
+}
+
+
+// G2P of a linear node velocity v = v0 + B x gives v(x_p) and C = B at
+// every particle (linear completeness of the B-spline)
+TEST(mpm3DTransfers, G2PReproducesLinearVelocityField)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(9);
+    testParticles tp(g, 2, &gen);
+    const double v0[3] = {0.5, -1, 2};
+    const double B[3][3] = {{0.3, -0.2, 0.1}, {1.5, 0, -0.7}, {0.2, 0.4, -1}};
+
+    mpm3DGrid grid;
+    grid.resize(g.nNodes());
+    double* const v[3] = {grid.vx.data(), grid.vy.data(), grid.vz.data()};
+    for (gridIndex n = 0; n < g.nNodes(); ++n)
+    {
+        double xi[3];
+        nodePosition(g, n, xi);
+        for (int a = 0; a < 3; ++a)
+        {
+            v[a][n] = v0[a] + B[a][0]*xi[0] + B[a][1]*xi[1] + B[a][2]*xi[2];
+        }
+    }
+    packVelocities3D(g, g.allNodes(), grid);
+
+    const mpm3DParticles p = tp.view();
+    const mpm3DSettings set;
+    // Round-off of sums of 27 terms of order 3 m/s (gradients: over dx)
+    constexpr double tol = 1e-12;
+    for (gridIndex i = 0; i < p.n; ++i)
+    {
+        const stencil<3, kernel3> s
+        (
+            g, kernel3(), p.x[0][i], p.x[1][i], p.x[2][i]
+        );
+        double vp[3];
+        const double ratio = gridToParticle3D(s, set, 1e-3, grid, p, i, vp);
+        double L[9];
+        for (int a = 0; a < 3; ++a)
+        {
+            const double exact =
+                v0[a] + B[a][0]*p.x[0][i] + B[a][1]*p.x[1][i]
+              + B[a][2]*p.x[2][i];
+            ASSERT_NEAR(vp[a], exact, tol) << "particle " << i;
+            ASSERT_NEAR(p.u[a][i], exact, tol) << "particle " << i;
+            for (int b = 0; b < 3; ++b)
+            {
+                L[3*a + b] = B[a][b];
+                ASSERT_NEAR(p.C[3*a + b][i], B[a][b], tol/g.dx[0])
+                    << "particle " << i;
+            }
+        }
+        EXPECT_NEAR(ratio, stepJacobian(L, 1e-3), 1e-14);
+    }
+}
+
+
+// Smoothing: a body at rest (volume ratio r = 1) scatters (V r)_i = V_i
+// bit for bit, so that its J stays as it is
+TEST(mpm3DTransfers, VolumeChangeOfBodyAtRestIsNodeVolumeExactly)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(13);
+    testParticles tp(g, 2, &gen);
+    std::fill(tp.div.begin(), tp.div.end(), 1.0);
+    mpm3DGrid grid;
+    grid.resize(g.nNodes());
+    const scatterSchedule schedule(g);
+    const mpm3DParticles p = tp.view();
+    pressureToGrid3D
+    (
+        g, schedule, kernel3(), g.allNodes(), tp.cellStart.data(), p, grid
+    );
+    volumeChangeToGrid3D
+    (
+        g, schedule, kernel3(), g.allNodes(), tp.cellStart.data(), p, grid
+    );
+    double V = 0;
+    for (gridIndex n = 0; n < g.nNodes(); ++n)
+    {
+        V += grid.vol[n];
+    }
+    EXPECT_GT(V, 0);
+    EXPECT_TRUE(grid.dVol == grid.vol);
+}
+
+
+// ************************************************************************* //
