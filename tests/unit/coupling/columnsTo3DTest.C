@@ -21,7 +21,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "columnsTo3D.H"
-#include "depthAveragedFields.H"
+#include "depthAveragedParticles.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
@@ -82,26 +82,8 @@ particleArrays fields3D()
     return p;
 }
 
-// Columns with dampmFoam's fields, and the view the conversion reads
-struct columnSet
-{
-    particleArrays p;
-    depthAveragedFields f;
-
-    columnSet()
-    :
-        p(),
-        f(p)
-    {}
-
-    runOutFields runOut() const
-    {
-        return f.runOut(p);
-    }
-};
-
 // Random columns with dampmFoam's fields; centres in [x0, x1] x [y0, y1]
-columnSet randomColumns
+depthAveragedParticles randomColumns
 (
     const label n,
     const double x0, const double x1,
@@ -109,7 +91,7 @@ columnSet randomColumns
     const unsigned seed
 )
 {
-    columnSet set;
+    depthAveragedParticles set;
     particleArrays& c = set.p;
     const label A = set.f.A();
     const label F = set.f.F();
@@ -148,9 +130,9 @@ columnSet randomColumns
 }
 
 // One column of c as its own set
-columnSet oneColumn(const columnSet& c, const label i)
+depthAveragedParticles oneColumn(const depthAveragedParticles& c, const label i)
 {
-    columnSet one(c);
+    depthAveragedParticles one(c);
     std::vector<char> remove(c.p.size(), 1);
     remove[i] = 0;
     one.p.removeFlagged(remove);
@@ -173,7 +155,7 @@ TEST(columnsTo3D, ConservesOnRandomColumnsOverSlopingGround)
         region, spacing, *mat, g, columnsTo3D::profileType::uniform,
         groundWithGradient
     );
-    const columnSet columns = randomColumns(3000, 1, 19, 1, 9, 7);
+    const depthAveragedParticles columns = randomColumns(3000, 1, 19, 1, 9, 7);
     particleArrays p = fields3D();
     const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
 
@@ -211,7 +193,7 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
         region, spacing, *mat, g, columnsTo3D::profileType::uniform,
         groundWithGradient
     );
-    const columnSet columns = randomColumns(300, 1, 19, 1, 9, 11);
+    const depthAveragedParticles columns = randomColumns(300, 1, 19, 1, 9, 11);
     const label A = columns.f.A();
     const label F = columns.f.F();
     const label sigma = fields3D().field("sigma").first;
@@ -293,7 +275,7 @@ TEST(columnsTo3D, BedVerticalVelocityFollowsTheGroundOnly)
         groundWithGradient,
         columnsTo3D::verticalType::bed
     );
-    const columnSet columns = randomColumns(50, 1, 19, 1, 9, 19);
+    const depthAveragedParticles columns = randomColumns(50, 1, 19, 1, 9, 19);
     particleArrays p = fields3D();
     const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
     for (label i = 0; i < p.size(); ++i)
@@ -319,7 +301,7 @@ TEST(columnsTo3D, BagnoldProfileKeepsTheDepthAverage)
         region, spacing, *mat, g, columnsTo3D::profileType::Bagnold,
         groundWithGradient
     );
-    const columnSet columns = randomColumns(500, 1, 19, 1, 9, 13);
+    const depthAveragedParticles columns = randomColumns(500, 1, 19, 1, 9, 13);
     particleArrays p = fields3D();
     const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
 
@@ -340,7 +322,7 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
         groundWithGradient
     );
     // Centres from x = -2 to 22: some outside the region [0, 20]
-    const columnSet columns = randomColumns(2000, -2, 22, 0, 10, 17);
+    const depthAveragedParticles columns = randomColumns(2000, -2, 22, 0, 10, 17);
     double massOutside = 0;
     label nOutside = 0;
     for (label i = 0; i < columns.p.size(); ++i)
@@ -379,7 +361,7 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     }
 
     // A column taller than the region is not converted either
-    columnSet tall = oneColumn(columns, 0);
+    depthAveragedParticles tall = oneColumn(columns, 0);
     tall.p.column(particleArrays::X)[0] = 10;
     tall.p.column(particleArrays::VOL)[0] *= 1e4;
     particleArrays q = fields3D();

@@ -16,6 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedDiagnostics.H"
+#include "depthAveragedParticles.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <limits>
@@ -32,46 +33,35 @@ namespace
 // Sums of three terms
 constexpr double roundOff = 1e-15;
 
-struct columnSet
+//- Add a column at (x, y) of mass m, velocity (u, v), bed gradient (gx, gy)
+void add
+(
+    depthAveragedParticles& c,
+    const double x, const double y, const double m,
+    const double u, const double v, const double gx, const double gy
+)
 {
-    particleArrays p;
-    depthAveragedFields f;
-
-    columnSet()
-    :
-        p(),
-        f(p)
-    {}
-
-    //- A column at (x, y) of mass m, velocity (u, v), bed gradient (gx, gy)
-    void add
-    (
-        const double x, const double y, const double m,
-        const double u, const double v, const double gx, const double gy
-    )
-    {
-        const label i = p.append(1);
-        p.column(particleArrays::X)[i] = x;
-        p.column(particleArrays::Y)[i] = y;
-        p.column(particleArrays::M)[i] = m;
-        p.column(particleArrays::UX)[i] = u;
-        p.column(particleArrays::UY)[i] = v;
-        p.column(f.gradZ())[i] = gx;
-        p.column(f.gradZ() + 1)[i] = gy;
-        p.column(f.h())[i] = 1;
-    }
-};
+    const label i = c.p.append(1);
+    c.at(particleArrays::X, i) = x;
+    c.at(particleArrays::Y, i) = y;
+    c.at(particleArrays::M, i) = m;
+    c.at(particleArrays::UX, i) = u;
+    c.at(particleArrays::UY, i) = v;
+    c.at(c.f.gradZ(), i) = gx;
+    c.at(c.f.gradZ() + 1, i) = gy;
+    c.at(c.f.h(), i) = 1;
+}
 
 // Three columns worked by hand:
 //   1: m 2, u (3, 4), grad Z (0.5, 0): w = 1.5, v^2 = 25 + 2.25
 //   2: m 1, u (0, -1), grad Z (0, 2):  w = -2,  v^2 = 1 + 4
 //   3: m 4, u (0, 0),  grad Z (1, 1):  w = 0,   v^2 = 0
-columnSet threeColumns()
+depthAveragedParticles threeColumns()
 {
-    columnSet c;
-    c.add(1, 2, 2, 3, 4, 0.5, 0);
-    c.add(-3, 5, 1, 0, -1, 0, 2);
-    c.add(7, -1, 4, 0, 0, 1, 1);
+    depthAveragedParticles c;
+    add(c, 1, 2, 2, 3, 4, 0.5, 0);
+    add(c, -3, 5, 1, 0, -1, 0, 2);
+    add(c, 7, -1, 4, 0, 0, 1, 1);
     return c;
 }
 
@@ -80,7 +70,7 @@ columnSet threeColumns()
 
 TEST(depthAveragedDiagnostics, TotalsOfThreeColumnsMatchTheHandValues)
 {
-    const columnSet c = threeColumns();
+    const depthAveragedParticles c = threeColumns();
 
     const depthAveragedDiagnostics::totals t =
         depthAveragedDiagnostics::sum(c.p, c.f, true);
@@ -104,7 +94,7 @@ TEST(depthAveragedDiagnostics, TotalsOfThreeColumnsMatchTheHandValues)
 
 TEST(depthAveragedDiagnostics, NoColumnsGiveZeroTotalsAndAPointExtent)
 {
-    const columnSet c;
+    const depthAveragedParticles c;
     const depthAveragedDiagnostics::totals t =
         depthAveragedDiagnostics::sum(c.p, c.f, true);
     EXPECT_EQ(t.mass, 0.0);
@@ -118,12 +108,12 @@ TEST(depthAveragedDiagnostics, NoColumnsGiveZeroTotalsAndAPointExtent)
 
 TEST(depthAveragedDiagnostics, SameTotalsOnOneAndTwoThreads)
 {
-    columnSet c;
+    depthAveragedParticles c;
     std::mt19937 gen(7);
     std::uniform_real_distribution<double> u(-1, 1);
     for (label i = 0; i < 100001; ++i)
     {
-        c.add(u(gen), u(gen), 1 + u(gen), u(gen), u(gen), u(gen), u(gen));
+        add(c, u(gen), u(gen), 1 + u(gen), u(gen), u(gen), u(gen), u(gen));
     }
 #ifdef _OPENMP
     const int threads = omp_get_max_threads();
@@ -150,23 +140,23 @@ TEST(depthAveragedDiagnostics, NonFiniteFieldIsNamed)
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     {
-        const columnSet c = threeColumns();
+        const depthAveragedParticles c = threeColumns();
         EXPECT_EQ(depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "");
     }
     {
-        columnSet c = threeColumns();
+        depthAveragedParticles c = threeColumns();
         c.p.column(c.f.h())[1] = nan;
         EXPECT_FALSE(depthAveragedDiagnostics::sum(c.p, c.f, true).finite);
         EXPECT_EQ(depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "h");
     }
     {
-        columnSet c = threeColumns();
+        depthAveragedParticles c = threeColumns();
         c.p.column(particleArrays::UY)[2] = inf;
         EXPECT_FALSE(depthAveragedDiagnostics::sum(c.p, c.f, false).finite);
         EXPECT_EQ(depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "U");
     }
     {
-        columnSet c = threeColumns();
+        depthAveragedParticles c = threeColumns();
         c.p.column(particleArrays::X)[0] = nan;
         c.p.column(c.f.h())[0] = nan;
         EXPECT_EQ

@@ -16,6 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedSeeding.H"
+#include "depthAveragedParticles.H"
 #include "depthAveragedKernels.H"
 #include "visitShape.H"
 #include "topographyModel.H"
@@ -59,14 +60,10 @@ const std::string box =
 const double boxVolume = 2*5*3.5;
 
 struct seeded
+:
+    public depthAveragedParticles
 {
-    particleArrays p;
-    depthAveragedFields f;
-
     seeded(const std::string& shapeName, const bool projection)
-    :
-        p(),
-        f(p)
     {
         const gridGeometry g = makeGrid();
         dictionary none;

@@ -17,6 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedSplitting.H"
+#include "depthAveragedParticles.H"
 #include "IStringStream.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -56,31 +57,13 @@ dictionary dampmProperties(const std::string& text)
     return dictionary(is);
 }
 
-// Columns with dampmFoam's fields
-struct columnSet
-{
-    particleArrays p;
-    depthAveragedFields f;
-
-    columnSet()
-    :
-        p(),
-        f(p)
-    {}
-
-    double& at(const label field, const label i)
-    {
-        return p.column(field)[i];
-    }
-};
-
 // n random columns well inside the grid, footprints stretched 1 to 3 seed
 // areas, depths 0.1 to 1 m, affine velocity fields
-columnSet randomColumns(const label n, const unsigned seed)
+depthAveragedParticles randomColumns(const label n, const unsigned seed)
 {
     std::mt19937 gen(seed);
     std::uniform_real_distribution<double> u(0, 1);
-    columnSet c;
+    depthAveragedParticles c;
     c.p.append(n);
     for (label i = 0; i < n; ++i)
     {
@@ -152,7 +135,7 @@ TEST(depthAveragedSplitting, HalvesKeepMassAreaMomentumAndCentreOfMass)
     (
         dampmProperties("splitRatio 1.25; splitHMin 0;"), g, seedArea, 1e-4
     );
-    columnSet c = randomColumns(400, 3);
+    depthAveragedParticles c = randomColumns(400, 3);
     const particleArrays before(c.p);
     const sums s0 = total(c.p, c.f);
 
@@ -217,7 +200,7 @@ TEST(depthAveragedSplitting, HalvesKeepMassAreaMomentumAndCentreOfMass)
 TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
 {
     const gridGeometry g = makeGrid();
-    columnSet c = randomColumns(1, 5);
+    depthAveragedParticles c = randomColumns(1, 5);
     const double area = std::abs
     (
         c.at(c.f.F(), 0)*c.at(c.f.F() + 3, 0)
@@ -227,7 +210,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
 
     // Below splitRatio seed areas
     {
-        columnSet one(c);
+        depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
             dampmProperties("splitRatio 4; splitHMin 0;"), g, seedArea, 0
@@ -236,7 +219,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
     }
     // Thinner than splitHMin
     {
-        columnSet one(c);
+        depthAveragedParticles one(c);
         const std::string text =
             "splitRatio 1; splitHMin " + std::to_string(1.01*h) + ";";
         depthAveragedSplitting split(dampmProperties(text), g, seedArea, 0);
@@ -244,7 +227,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
     }
     // A half would leave the grid
     {
-        columnSet one(c);
+        depthAveragedParticles one(c);
         one.at(particleArrays::X, 0) = g.origin[0] + 1e-9;
         one.at(particleArrays::Y, 0) = g.origin[1] + 1e-9;
         depthAveragedSplitting split
@@ -255,7 +238,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
     }
     // Off
     {
-        columnSet one(c);
+        depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
             dampmProperties("splitRatio 0;"), g, seedArea, 0
@@ -265,7 +248,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
     }
     // And it splits otherwise
     {
-        columnSet one(c);
+        depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
             dampmProperties("splitRatio 1; splitHMin 0;"), g, seedArea, 0
