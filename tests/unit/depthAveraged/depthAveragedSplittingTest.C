@@ -49,7 +49,8 @@ gridGeometry makeGrid()
     return g;
 }
 
-const double seedArea = 0.5*0.25/4;
+const label nPerCell = 2;
+const double seedArea = 0.5*0.25/(nPerCell*nPerCell);
 
 dictionary dampmProperties(const std::string& text)
 {
@@ -133,7 +134,7 @@ TEST(depthAveragedSplitting, HalvesKeepMassAreaMomentumAndCentreOfMass)
     const gridGeometry g = makeGrid();
     depthAveragedSplitting split
     (
-        dampmProperties("splitRatio 1.25; splitHMin 0;"), g, seedArea, 1e-4
+        dampmProperties("splitRatio 1.25; splitHMin 0;"), g, nPerCell, 1e-4
     );
     depthAveragedParticles c = randomColumns(400, 3);
     const particleArrays before(c.p);
@@ -213,7 +214,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
         depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
-            dampmProperties("splitRatio 4; splitHMin 0;"), g, seedArea, 0
+            dampmProperties("splitRatio 4; splitHMin 0;"), g, nPerCell, 0
         );
         EXPECT_EQ(split.split(one.p, one.f, false), 0);
     }
@@ -222,7 +223,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
         depthAveragedParticles one(c);
         const std::string text =
             "splitRatio 1; splitHMin " + std::to_string(1.01*h) + ";";
-        depthAveragedSplitting split(dampmProperties(text), g, seedArea, 0);
+        depthAveragedSplitting split(dampmProperties(text), g, nPerCell, 0);
         EXPECT_EQ(split.split(one.p, one.f, false), 0);
     }
     // A half would leave the grid
@@ -232,7 +233,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
         one.at(particleArrays::Y, 0) = g.origin[1] + 1e-9;
         depthAveragedSplitting split
         (
-            dampmProperties("splitRatio 1; splitHMin 0;"), g, seedArea, 0
+            dampmProperties("splitRatio 1; splitHMin 0;"), g, nPerCell, 0
         );
         EXPECT_EQ(split.split(one.p, one.f, false), 0);
     }
@@ -241,7 +242,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
         depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
-            dampmProperties("splitRatio 0;"), g, seedArea, 0
+            dampmProperties("splitRatio 0;"), g, nPerCell, 0
         );
         EXPECT_FALSE(split.active());
         EXPECT_EQ(split.split(one.p, one.f, false), 0);
@@ -251,7 +252,7 @@ TEST(depthAveragedSplitting, SmallThinOrEdgeColumnsAndSplitRatioZeroStayWhole)
         depthAveragedParticles one(c);
         depthAveragedSplitting split
         (
-            dampmProperties("splitRatio 1; splitHMin 0;"), g, seedArea, 0
+            dampmProperties("splitRatio 1; splitHMin 0;"), g, nPerCell, 0
         );
         EXPECT_EQ(split.split(one.p, one.f, false), 1);
     }
@@ -263,7 +264,7 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
     const gridGeometry g = makeGrid();
     depthAveragedSplitting byDefault
     (
-        dampmProperties("splitRatio 1.25;"), g, seedArea, 1e-4
+        dampmProperties("splitRatio 1.25;"), g, nPerCell, 1e-4
     );
     byDefault.setDefaultHMin(2.34567);
     EXPECT_EQ(byDefault.rule().hSplit, 0.0235);
@@ -271,7 +272,7 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
 
     depthAveragedSplitting given
     (
-        dampmProperties("splitRatio 1.25; splitHMin 0.5;"), g, seedArea, 1e-4
+        dampmProperties("splitRatio 1.25; splitHMin 0.5;"), g, nPerCell, 1e-4
     );
     given.setDefaultHMin(2.34567);
     EXPECT_EQ(given.rule().hSplit, 0.5);
@@ -279,7 +280,7 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
     // The floor is never below hMin
     depthAveragedSplitting thin
     (
-        dampmProperties("splitHMin 1e-6;"), g, seedArea, 1e-4
+        dampmProperties("splitHMin 1e-6;"), g, nPerCell, 1e-4
     );
     EXPECT_EQ(thin.rule().hSplit, 1e-4);
 }

@@ -347,13 +347,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
         )
     ),
     fields_(particles_),
-    splitting_
-    (
-        dict,
-        grid.geometry(),
-        depthAveragedSeeding::seedArea(grid.geometry(), nPerCell_),
-        hMin_
-    ),
+    splitting_(dict, grid.geometry(), nPerCell_, hMin_),
     schedule_(grid.geometry()),
     massTol_(0),
     outflowMass_(0),

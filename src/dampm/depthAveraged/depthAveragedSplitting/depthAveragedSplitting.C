@@ -9,11 +9,20 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedSplitting.H"
+#include "depthAveragedSeeding.H"
 #include "speedLimit.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::scalar Foam::depthAveragedSplitting::splitHMinFraction = 0.01;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::depthAveragedSplitting::seedArea() const
+{
+    return depthAveragedSeeding::seedArea(geometry_, nPerCell_);
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -22,12 +31,12 @@ Foam::depthAveragedSplitting::depthAveragedSplitting
 (
     const dictionary& dict,
     const gridGeometry& geometry,
-    const scalar seedArea,
+    const label nPerCell,
     const scalar hMin
 )
 :
     geometry_(geometry),
-    seedArea_(seedArea),
+    nPerCell_(nPerCell),
     hMin_(hMin),
     splitRatio_(dict.getOrDefault<scalar>("splitRatio", 1.25)),
     splitHMin_(dict.getOrDefault<scalar>("splitHMin", 0)),
@@ -53,7 +62,7 @@ Foam::depthAveragedSplitting::depthAveragedSplitting
 Foam::splitRule Foam::depthAveragedSplitting::rule() const
 {
     splitRule r;
-    r.maxArea = splitRatio_*seedArea_;
+    r.maxArea = splitRatio_*seedArea();
     r.hSplit = max(hMin_, splitHMin_);
     for (int d = 0; d < 2; ++d)
     {
@@ -224,7 +233,7 @@ void Foam::depthAveragedSplitting::describe(Ostream& os) const
     if (active())
     {
         os  << "above " << splitRatio_ << " seed areas ("
-            << splitRatio_*seedArea_ << " m^2), if not thinner than "
+            << splitRatio_*seedArea() << " m^2), if not thinner than "
             << max(hMin_, splitHMin_) << " m";
     }
     else
