@@ -40,7 +40,6 @@ Description
 #include "particleCloudIO.H"
 #include "hazardMaps.H"
 #include "handOff.H"
-#include "timeSeriesFile.H"
 #include "stepTimers.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"

@@ -21,6 +21,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "columnsTo3D.H"
+#include "depthAveragedParticles.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
@@ -82,7 +83,7 @@ particleArrays fields3D()
 }
 
 // Random columns with dampmFoam's fields; centres in [x0, x1] x [y0, y1]
-particleArrays randomColumns
+depthAveragedParticles randomColumns
 (
     const label n,
     const double x0, const double x1,
@@ -90,10 +91,11 @@ particleArrays randomColumns
     const unsigned seed
 )
 {
-    particleArrays c;
-    const label A = c.addField("A", particleArrays::fieldKind::scalar);
-    const label F = c.addField("F", particleArrays::fieldKind::tensor2D);
-    const label C = c.addField("gradU", particleArrays::fieldKind::tensor2D);
+    depthAveragedParticles set;
+    particleArrays& c = set.p;
+    const label A = set.f.A();
+    const label F = set.f.F();
+    const label C = set.f.gradU();
     c.append(n);
     std::mt19937 gen(seed);
     std::uniform_real_distribution<double> u(0, 1);
@@ -124,16 +126,16 @@ particleArrays randomColumns
         c.column(C + 2)[i] = u(gen) - 0.5;
         c.column(C + 3)[i] = 2*(u(gen) - 0.5);
     }
-    return c;
+    return set;
 }
 
 // One column of c as its own set
-particleArrays oneColumn(const particleArrays& c, const label i)
+depthAveragedParticles oneColumn(const depthAveragedParticles& c, const label i)
 {
-    particleArrays one(c);
-    std::vector<char> remove(c.size(), 1);
+    depthAveragedParticles one(c);
+    std::vector<char> remove(c.p.size(), 1);
     remove[i] = 0;
-    one.removeFlagged(remove);
+    one.p.removeFlagged(remove);
     return one;
 }
 
@@ -153,9 +155,9 @@ TEST(columnsTo3D, ConservesOnRandomColumnsOverSlopingGround)
         region, spacing, *mat, g, columnsTo3D::profileType::uniform,
         groundWithGradient
     );
-    const particleArrays columns = randomColumns(3000, 1, 19, 1, 9, 7);
+    const depthAveragedParticles columns = randomColumns(3000, 1, 19, 1, 9, 7);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns, p);
+    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
 
     EXPECT_EQ(t.columns, 3000);
     EXPECT_EQ(t.unconvertedColumns, 0);
@@ -191,39 +193,39 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
         region, spacing, *mat, g, columnsTo3D::profileType::uniform,
         groundWithGradient
     );
-    const particleArrays columns = randomColumns(300, 1, 19, 1, 9, 11);
-    const label A = columns.field("A").first;
-    const label F = columns.field("F").first;
+    const depthAveragedParticles columns = randomColumns(300, 1, 19, 1, 9, 11);
+    const label A = columns.f.A();
+    const label F = columns.f.F();
     const label sigma = fields3D().field("sigma").first;
     const label pF = fields3D().field("p").first;
     const label JF = fields3D().field("J").first;
 
-    for (label c = 0; c < columns.size(); ++c)
+    for (label c = 0; c < columns.p.size(); ++c)
     {
         particleArrays p = fields3D();
-        conversion.convert(oneColumn(columns, c), p);
+        conversion.convert(oneColumn(columns, c).runOut(), p);
         ASSERT_GT(p.size(), 0);
 
         // The footprint F scaled to the area A
         const double* Fc[4] =
         {
-            columns.column(F), columns.column(F + 1),
-            columns.column(F + 2), columns.column(F + 3)
+            columns.p.column(F), columns.p.column(F + 1),
+            columns.p.column(F + 2), columns.p.column(F + 3)
         };
         const double f00 = Fc[0][c], f01 = Fc[1][c];
         const double f10 = Fc[2][c], f11 = Fc[3][c];
         const double det = f00*f11 - f01*f10;
-        const double area = columns.column(A)[c];
+        const double area = columns.p.column(A)[c];
         const double s = std::sqrt(area/std::abs(det));
-        const double h = columns.column(particleArrays::VOL)[c]/area;
-        const double xc = columns.column(particleArrays::X)[c];
-        const double yc = columns.column(particleArrays::Y)[c];
-        const double uc = columns.column(particleArrays::UX)[c];
-        const double vc = columns.column(particleArrays::UY)[c];
-        const double V0 = columns.column(particleArrays::VOL)[c]/p.size();
-        const label gradU = columns.field("gradU").first;
+        const double h = columns.p.column(particleArrays::VOL)[c]/area;
+        const double xc = columns.p.column(particleArrays::X)[c];
+        const double yc = columns.p.column(particleArrays::Y)[c];
+        const double uc = columns.p.column(particleArrays::UX)[c];
+        const double vc = columns.p.column(particleArrays::UY)[c];
+        const double V0 = columns.p.column(particleArrays::VOL)[c]/p.size();
+        const label gradU = columns.f.gradU();
         const double divU =
-            columns.column(gradU)[c] + columns.column(gradU + 3)[c];
+            columns.p.column(gradU)[c] + columns.p.column(gradU + 3)[c];
 
         for (label i = 0; i < p.size(); ++i)
         {
@@ -273,9 +275,9 @@ TEST(columnsTo3D, BedVerticalVelocityFollowsTheGroundOnly)
         groundWithGradient,
         columnsTo3D::verticalType::bed
     );
-    const particleArrays columns = randomColumns(50, 1, 19, 1, 9, 19);
+    const depthAveragedParticles columns = randomColumns(50, 1, 19, 1, 9, 19);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns, p);
+    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
     for (label i = 0; i < p.size(); ++i)
     {
         const double x = p.column(particleArrays::X)[i];
@@ -299,9 +301,9 @@ TEST(columnsTo3D, BagnoldProfileKeepsTheDepthAverage)
         region, spacing, *mat, g, columnsTo3D::profileType::Bagnold,
         groundWithGradient
     );
-    const particleArrays columns = randomColumns(500, 1, 19, 1, 9, 13);
+    const depthAveragedParticles columns = randomColumns(500, 1, 19, 1, 9, 13);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns, p);
+    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
 
     const double pScale = std::abs(t.momentumDA[0]) + std::abs(t.momentumDA[1]);
     EXPECT_LT(std::abs(t.momentum3D[0] - t.momentumDA[0]), roundOff*pScale);
@@ -320,26 +322,26 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
         groundWithGradient
     );
     // Centres from x = -2 to 22: some outside the region [0, 20]
-    const particleArrays columns = randomColumns(2000, -2, 22, 0, 10, 17);
+    const depthAveragedParticles columns = randomColumns(2000, -2, 22, 0, 10, 17);
     double massOutside = 0;
     label nOutside = 0;
-    for (label i = 0; i < columns.size(); ++i)
+    for (label i = 0; i < columns.p.size(); ++i)
     {
-        const double x = columns.column(particleArrays::X)[i];
+        const double x = columns.p.column(particleArrays::X)[i];
         if (x < 0 || x > 20)
         {
             ++nOutside;
-            massOutside += columns.column(particleArrays::M)[i];
+            massOutside += columns.p.column(particleArrays::M)[i];
         }
     }
     particleArrays p = fields3D();
     std::vector<char> converted;
-    const columnsTo3D::totals t = conversion.convert(columns, p, &converted);
+    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p, &converted);
 
     ASSERT_GT(nOutside, 0);
     EXPECT_EQ(t.unconvertedColumns, nOutside);
     EXPECT_LT(rel(t.unconvertedMass, massOutside), roundOff);
-    EXPECT_EQ(t.columns + t.unconvertedColumns, columns.size());
+    EXPECT_EQ(t.columns + t.unconvertedColumns, columns.p.size());
     label nConverted = 0;
     for (const char c : converted)
     {
@@ -359,11 +361,11 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     }
 
     // A column taller than the region is not converted either
-    particleArrays tall = oneColumn(columns, 0);
-    tall.column(particleArrays::X)[0] = 10;
-    tall.column(particleArrays::VOL)[0] *= 1e4;
+    depthAveragedParticles tall = oneColumn(columns, 0);
+    tall.p.column(particleArrays::X)[0] = 10;
+    tall.p.column(particleArrays::VOL)[0] *= 1e4;
     particleArrays q = fields3D();
-    const columnsTo3D::totals tt = conversion.convert(tall, q);
+    const columnsTo3D::totals tt = conversion.convert(tall.runOut(), q);
     EXPECT_EQ(tt.columns, 0);
     EXPECT_EQ(tt.columnsAbove, 1);
     EXPECT_EQ(q.size(), 0);

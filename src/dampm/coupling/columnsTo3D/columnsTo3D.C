@@ -123,32 +123,30 @@ Foam::columnsTo3D::columnsTo3D
 
 Foam::columnsTo3D::totals Foam::columnsTo3D::convert
 (
-    const particleArrays& columns,
+    const runOutFields& columns,
     particleArrays& particles3D,
     std::vector<char>* inRegion
 ) const
 {
-    const label nCol = columns.size();
-    const double* cx = columns.column(particleArrays::X);
-    const double* cy = columns.column(particleArrays::Y);
-    const double* cu = columns.column(particleArrays::UX);
-    const double* cv = columns.column(particleArrays::UY);
-    const double* cm = columns.column(particleArrays::M);
-    const double* cV = columns.column(particleArrays::VOL);
-    const double* cA = columns.column(columns.field("A").first);
-    const label F = columns.field("F").first;
-    const double* F00 = columns.column(F);
-    const double* F01 = columns.column(F + 1);
-    const double* F10 = columns.column(F + 2);
-    const double* F11 = columns.column(F + 3);
+    const label nCol = columns.n;
+    const double* cx = columns.x;
+    const double* cy = columns.y;
+    const double* cu = columns.ux;
+    const double* cv = columns.uy;
+    const double* cm = columns.m;
+    const double* cV = columns.V;
+    const double* cA = columns.A;
+    const double* F00 = columns.F[0];
+    const double* F01 = columns.F[1];
+    const double* F10 = columns.F[2];
+    const double* F11 = columns.F[3];
 
     // The divergence of the column's velocity (trace of gradU): the layer's
     // thinning rate over its depth
     const bool continuity =
-        vertical_ == verticalType::continuity && columns.found("gradU");
-    const label C = continuity ? columns.field("gradU").first : -1;
-    const double* Cxx = continuity ? columns.column(C) : nullptr;
-    const double* Cyy = continuity ? columns.column(C + 3) : nullptr;
+        vertical_ == verticalType::continuity && columns.gradU[0] != nullptr;
+    const double* Cxx = continuity ? columns.gradU[0] : nullptr;
+    const double* Cyy = continuity ? columns.gradU[3] : nullptr;
 
     const scalar sh = std::sqrt(spacing_.x()*spacing_.y());
     const point& lo = region_.min();
