@@ -41,10 +41,10 @@ particleArrays particlesAt
     p.append(label(x.size()));
     for (size_t i = 0; i < x.size(); ++i)
     {
-        p.column(particleArrays::X)[i] = x[i];
-        p.column(particleArrays::Y)[i] = 0.6;
-        p.column(particleArrays::Z)[i] = 0.5;
-        p.column(particleArrays::M)[i] = m[i];
+        p.component(particleArrays::X)[i] = x[i];
+        p.component(particleArrays::Y)[i] = 0.6;
+        p.component(particleArrays::Z)[i] = 0.5;
+        p.component(particleArrays::M)[i] = m[i];
     }
     return p;
 }
@@ -56,7 +56,7 @@ TEST(barrierMonitor, ForceOfEachStepAndItsPeakWithTime)
 {
     IStringStream is("contact slip;");
     barrierMonitor monitor("wall", dictionary(is));
-    const mpm3DGrid noNodes;
+    const mpm3dGrid noNodes;
     const struct { vector F; scalar t, peak, peakTime; } steps[] =
     {
         {vector(3, 4, 0), 0.1, 5, 0.1},
@@ -85,7 +85,7 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
     );
     const gridGeometry& g = probe.grid();
     const scalar massTol = 1e-6;
-    mpm3DGrid grid;
+    mpm3dGrid grid;
     grid.resize(g.nNodes());
     auto hold = [&](const label i, const label k, const scalar m)
     {

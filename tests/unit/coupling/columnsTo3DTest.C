@@ -107,24 +107,24 @@ depthAveragedParticles randomColumns
         // F = R(angle) [Fxx shear*Fxx; 0 Fyy]
         const double cs = std::cos(angle), sn = std::sin(angle);
         const double f[4] = {Fxx, shear*Fxx, 0, Fyy};
-        c.column(F)[i] = cs*f[0] - sn*f[2];
-        c.column(F + 1)[i] = cs*f[1] - sn*f[3];
-        c.column(F + 2)[i] = sn*f[0] + cs*f[2];
-        c.column(F + 3)[i] = sn*f[1] + cs*f[3];
+        c.component(F)[i] = cs*f[0] - sn*f[2];
+        c.component(F + 1)[i] = cs*f[1] - sn*f[3];
+        c.component(F + 2)[i] = sn*f[0] + cs*f[2];
+        c.component(F + 3)[i] = sn*f[1] + cs*f[3];
         // The area from the projected depth differs from |det F|
         const double area = (0.5 + u(gen))*Fxx*Fyy;
-        c.column(A)[i] = area;
-        c.column(particleArrays::VOL)[i] = area*h;
-        c.column(particleArrays::M)[i] = rho*area*h;
-        c.column(particleArrays::X)[i] = x0 + (x1 - x0)*u(gen);
-        c.column(particleArrays::Y)[i] = y0 + (y1 - y0)*u(gen);
-        c.column(particleArrays::UX)[i] = 20*(u(gen) - 0.5);
-        c.column(particleArrays::UY)[i] = 20*(u(gen) - 0.5);
+        c.component(A)[i] = area;
+        c.component(particleArrays::VOL)[i] = area*h;
+        c.component(particleArrays::M)[i] = rho*area*h;
+        c.component(particleArrays::X)[i] = x0 + (x1 - x0)*u(gen);
+        c.component(particleArrays::Y)[i] = y0 + (y1 - y0)*u(gen);
+        c.component(particleArrays::UX)[i] = 20*(u(gen) - 0.5);
+        c.component(particleArrays::UY)[i] = 20*(u(gen) - 0.5);
         // A stretching or converging layer, div u in [-2, 2] 1/s
-        c.column(C)[i] = 2*(u(gen) - 0.5);
-        c.column(C + 1)[i] = u(gen) - 0.5;
-        c.column(C + 2)[i] = u(gen) - 0.5;
-        c.column(C + 3)[i] = 2*(u(gen) - 0.5);
+        c.component(C)[i] = 2*(u(gen) - 0.5);
+        c.component(C + 1)[i] = u(gen) - 0.5;
+        c.component(C + 2)[i] = u(gen) - 0.5;
+        c.component(C + 3)[i] = 2*(u(gen) - 0.5);
     }
     return set;
 }
@@ -177,8 +177,8 @@ TEST(columnsTo3D, ConservesOnRandomColumnsOverSlopingGround)
     double m = 0, px = 0;
     for (label i = 0; i < p.size(); ++i)
     {
-        m += p.column(particleArrays::M)[i];
-        px += p.column(particleArrays::M)[i]*p.column(particleArrays::UX)[i];
+        m += p.component(particleArrays::M)[i];
+        px += p.component(particleArrays::M)[i]*p.component(particleArrays::UX)[i];
     }
     EXPECT_LT(rel(m, t.massDA), roundOff);
     EXPECT_LT(std::abs(px - t.momentumDA[0]), roundOff*pScale);
@@ -209,29 +209,29 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
         // The footprint F scaled to the area A
         const double* Fc[4] =
         {
-            columns.p.column(F), columns.p.column(F + 1),
-            columns.p.column(F + 2), columns.p.column(F + 3)
+            columns.p.component(F), columns.p.component(F + 1),
+            columns.p.component(F + 2), columns.p.component(F + 3)
         };
         const double f00 = Fc[0][c], f01 = Fc[1][c];
         const double f10 = Fc[2][c], f11 = Fc[3][c];
         const double det = f00*f11 - f01*f10;
-        const double area = columns.p.column(A)[c];
+        const double area = columns.p.component(A)[c];
         const double s = std::sqrt(area/std::abs(det));
-        const double h = columns.p.column(particleArrays::VOL)[c]/area;
-        const double xc = columns.p.column(particleArrays::X)[c];
-        const double yc = columns.p.column(particleArrays::Y)[c];
-        const double uc = columns.p.column(particleArrays::UX)[c];
-        const double vc = columns.p.column(particleArrays::UY)[c];
-        const double V0 = columns.p.column(particleArrays::VOL)[c]/p.size();
+        const double h = columns.p.component(particleArrays::VOL)[c]/area;
+        const double xc = columns.p.component(particleArrays::X)[c];
+        const double yc = columns.p.component(particleArrays::Y)[c];
+        const double uc = columns.p.component(particleArrays::UX)[c];
+        const double vc = columns.p.component(particleArrays::UY)[c];
+        const double V0 = columns.p.component(particleArrays::VOL)[c]/p.size();
         const label gradU = columns.f.gradU();
         const double divU =
-            columns.p.column(gradU)[c] + columns.p.column(gradU + 3)[c];
+            columns.p.component(gradU)[c] + columns.p.component(gradU + 3)[c];
 
         for (label i = 0; i < p.size(); ++i)
         {
-            const double x = p.column(particleArrays::X)[i];
-            const double y = p.column(particleArrays::Y)[i];
-            const double z = p.column(particleArrays::Z)[i];
+            const double x = p.component(particleArrays::X)[i];
+            const double y = p.component(particleArrays::Y)[i];
+            const double z = p.component(particleArrays::Z)[i];
             // Footprint coordinates: inside means |a|, |b| <= 1/2
             const double dx = (x - xc)/s, dy = (y - yc)/s;
             const double a = (f11*dx - f01*dy)/det;
@@ -243,24 +243,24 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
             EXPECT_GT(z, G);
             EXPECT_LT(z, G + h);
 
-            EXPECT_DOUBLE_EQ(p.column(particleArrays::UX)[i], uc);
-            EXPECT_DOUBLE_EQ(p.column(particleArrays::UY)[i], vc);
+            EXPECT_DOUBLE_EQ(p.component(particleArrays::UX)[i], uc);
+            EXPECT_DOUBLE_EQ(p.component(particleArrays::UY)[i], vc);
             // Continuity: along the bed, and the layer's thinning
             const double w = uc*groundDx(x, y) + vc*groundDy - (z - G)*divU;
             EXPECT_NEAR
             (
-                p.column(particleArrays::UZ)[i], w, roundOff*(1 + std::abs(w))
+                p.component(particleArrays::UZ)[i], w, roundOff*(1 + std::abs(w))
             );
 
             const double pressure = rho*g*(G + h - z);
-            EXPECT_NEAR(p.column(pF)[i], pressure, 1e-9*(1 + pressure));
-            EXPECT_DOUBLE_EQ(p.column(sigma)[i], -p.column(pF)[i]);
-            EXPECT_DOUBLE_EQ(p.column(sigma + 5)[i], -p.column(pF)[i]);
-            EXPECT_EQ(p.column(sigma + 1)[i], 0);
-            const double J = mat->restJ(p.column(pF)[i]);
-            EXPECT_DOUBLE_EQ(p.column(JF)[i], J);
+            EXPECT_NEAR(p.component(pF)[i], pressure, 1e-9*(1 + pressure));
+            EXPECT_DOUBLE_EQ(p.component(sigma)[i], -p.component(pF)[i]);
+            EXPECT_DOUBLE_EQ(p.component(sigma + 5)[i], -p.component(pF)[i]);
+            EXPECT_EQ(p.component(sigma + 1)[i], 0);
+            const double J = mat->restJ(p.component(pF)[i]);
+            EXPECT_DOUBLE_EQ(p.component(JF)[i], J);
             EXPECT_LT(J, 1 + 1e-15);
-            EXPECT_NEAR(p.column(particleArrays::VOL)[i], J*V0, 1e-14*V0);
+            EXPECT_NEAR(p.component(particleArrays::VOL)[i], J*V0, 1e-14*V0);
         }
     }
 }
@@ -280,13 +280,13 @@ TEST(columnsTo3D, BedVerticalVelocityFollowsTheGroundOnly)
     const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
     for (label i = 0; i < p.size(); ++i)
     {
-        const double x = p.column(particleArrays::X)[i];
-        const double y = p.column(particleArrays::Y)[i];
-        const double w = p.column(particleArrays::UX)[i]*groundDx(x, y)
-          + p.column(particleArrays::UY)[i]*groundDy;
+        const double x = p.component(particleArrays::X)[i];
+        const double y = p.component(particleArrays::Y)[i];
+        const double w = p.component(particleArrays::UX)[i]*groundDx(x, y)
+          + p.component(particleArrays::UY)[i]*groundDy;
         EXPECT_NEAR
         (
-            p.column(particleArrays::UZ)[i], w, roundOff*(1 + std::abs(w))
+            p.component(particleArrays::UZ)[i], w, roundOff*(1 + std::abs(w))
         );
     }
     EXPECT_DOUBLE_EQ(t.kineticEnergyVertical, t.kineticEnergyBed);
@@ -327,11 +327,11 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     label nOutside = 0;
     for (label i = 0; i < columns.p.size(); ++i)
     {
-        const double x = columns.p.column(particleArrays::X)[i];
+        const double x = columns.p.component(particleArrays::X)[i];
         if (x < 0 || x > 20)
         {
             ++nOutside;
-            massOutside += columns.p.column(particleArrays::M)[i];
+            massOutside += columns.p.component(particleArrays::M)[i];
         }
     }
     particleArrays p = fields3D();
@@ -354,7 +354,7 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     {
         for (int d = 0; d < 2; ++d)
         {
-            const double x = p.column(particleArrays::X + d)[i];
+            const double x = p.component(particleArrays::X + d)[i];
             EXPECT_GT(x, region.min()[d]);
             EXPECT_LT(x, region.max()[d]);
         }
@@ -362,8 +362,8 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
 
     // A column taller than the region is not converted either
     depthAveragedParticles tall = oneColumn(columns, 0);
-    tall.p.column(particleArrays::X)[0] = 10;
-    tall.p.column(particleArrays::VOL)[0] *= 1e4;
+    tall.p.component(particleArrays::X)[0] = 10;
+    tall.p.component(particleArrays::VOL)[0] *= 1e4;
     particleArrays q = fields3D();
     const columnsTo3D::totals tt = conversion.convert(tall.runOut(), q);
     EXPECT_EQ(tt.columns, 0);

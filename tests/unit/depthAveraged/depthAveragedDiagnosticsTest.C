@@ -145,20 +145,20 @@ TEST(depthAveragedDiagnostics, NonFiniteFieldIsNamed)
     }
     {
         depthAveragedParticles c = threeColumns();
-        c.p.column(c.f.h())[1] = nan;
+        c.p.component(c.f.h())[1] = nan;
         EXPECT_FALSE(depthAveragedDiagnostics::sum(c.p, c.f, true).finite);
         EXPECT_EQ(depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "h");
     }
     {
         depthAveragedParticles c = threeColumns();
-        c.p.column(particleArrays::UY)[2] = inf;
+        c.p.component(particleArrays::UY)[2] = inf;
         EXPECT_FALSE(depthAveragedDiagnostics::sum(c.p, c.f, false).finite);
         EXPECT_EQ(depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "U");
     }
     {
         depthAveragedParticles c = threeColumns();
-        c.p.column(particleArrays::X)[0] = nan;
-        c.p.column(c.f.h())[0] = nan;
+        c.p.component(particleArrays::X)[0] = nan;
+        c.p.component(c.f.h())[0] = nan;
         EXPECT_EQ
         (
             depthAveragedDiagnostics::nonFiniteField(c.p, c.f), "positions"

@@ -50,30 +50,30 @@ TEST(depthAveragedFields, RunOutViewReadsTheColumnsOfItsFields)
     particleArrays p;
     const depthAveragedFields f(p);
     p.append(3);
-    for (label c = 0; c < p.nColumns(); ++c)
+    for (label c = 0; c < p.nComponentArrays(); ++c)
     {
         for (label i = 0; i < 3; ++i)
         {
-            p.column(c)[i] = 100*c + i;
+            p.component(c)[i] = 100*c + i;
         }
     }
     const runOutFields v = f.runOut(p);
     EXPECT_EQ(v.n, 3);
     for (label i = 0; i < 3; ++i)
     {
-        EXPECT_EQ(v.x[i], p.column(particleArrays::X)[i]);
-        EXPECT_EQ(v.y[i], p.column(particleArrays::Y)[i]);
-        EXPECT_EQ(v.ux[i], p.column(particleArrays::UX)[i]);
-        EXPECT_EQ(v.uy[i], p.column(particleArrays::UY)[i]);
-        EXPECT_EQ(v.m[i], p.column(particleArrays::M)[i]);
-        EXPECT_EQ(v.V[i], p.column(particleArrays::VOL)[i]);
-        EXPECT_EQ(v.A[i], p.column(p.field("A").first)[i]);
+        EXPECT_EQ(v.x[i], p.component(particleArrays::X)[i]);
+        EXPECT_EQ(v.y[i], p.component(particleArrays::Y)[i]);
+        EXPECT_EQ(v.ux[i], p.component(particleArrays::UX)[i]);
+        EXPECT_EQ(v.uy[i], p.component(particleArrays::UY)[i]);
+        EXPECT_EQ(v.m[i], p.component(particleArrays::M)[i]);
+        EXPECT_EQ(v.V[i], p.component(particleArrays::VOL)[i]);
+        EXPECT_EQ(v.A[i], p.component(p.field("A").first)[i]);
         for (int k = 0; k < 4; ++k)
         {
-            EXPECT_EQ(v.F[k][i], p.column(p.field("F").first + k)[i]);
+            EXPECT_EQ(v.F[k][i], p.component(p.field("F").first + k)[i]);
             EXPECT_EQ
             (
-                v.gradU[k][i], p.column(p.field("gradU").first + k)[i]
+                v.gradU[k][i], p.component(p.field("gradU").first + k)[i]
             );
         }
     }

@@ -99,7 +99,7 @@ struct seeded
         double V = 0;
         for (label i = 0; i < p.size(); ++i)
         {
-            V += p.column(particleArrays::VOL)[i];
+            V += p.component(particleArrays::VOL)[i];
         }
         return V;
     }
@@ -120,19 +120,19 @@ TEST(depthAveragedSeeding, BoxReleaseIsSeededWithItsVolumeExactly)
     EXPECT_EQ(s.volume(), boxVolume);
     for (label i = 0; i < s.p.size(); ++i)
     {
-        const double V = s.p.column(particleArrays::VOL)[i];
+        const double V = s.p.component(particleArrays::VOL)[i];
         EXPECT_EQ(V, 2*a);
-        EXPECT_EQ(s.p.column(particleArrays::M)[i], rho*V);
-        EXPECT_EQ(s.p.column(s.f.h())[i], 2.0);
-        EXPECT_EQ(s.p.column(s.f.A())[i], a);
-        EXPECT_EQ(s.p.column(s.f.F())[i], 0.5);
-        EXPECT_EQ(s.p.column(s.f.F() + 1)[i], 0.0);
-        EXPECT_EQ(s.p.column(s.f.F() + 2)[i], 0.0);
-        EXPECT_EQ(s.p.column(s.f.F() + 3)[i], 0.25);
-        EXPECT_EQ(s.p.column(particleArrays::UX)[i], 1.5);
-        EXPECT_EQ(s.p.column(particleArrays::UY)[i], -0.5);
-        const double x = s.p.column(particleArrays::X)[i];
-        const double y = s.p.column(particleArrays::Y)[i];
+        EXPECT_EQ(s.p.component(particleArrays::M)[i], rho*V);
+        EXPECT_EQ(s.p.component(s.f.h())[i], 2.0);
+        EXPECT_EQ(s.p.component(s.f.A())[i], a);
+        EXPECT_EQ(s.p.component(s.f.F())[i], 0.5);
+        EXPECT_EQ(s.p.component(s.f.F() + 1)[i], 0.0);
+        EXPECT_EQ(s.p.component(s.f.F() + 2)[i], 0.0);
+        EXPECT_EQ(s.p.component(s.f.F() + 3)[i], 0.25);
+        EXPECT_EQ(s.p.component(particleArrays::UX)[i], 1.5);
+        EXPECT_EQ(s.p.component(particleArrays::UY)[i], -0.5);
+        const double x = s.p.component(particleArrays::X)[i];
+        const double y = s.p.component(particleArrays::Y)[i];
         EXPECT_GT(x, 5);
         EXPECT_LT(x, 10);
         EXPECT_GT(y, 2);
@@ -151,7 +151,7 @@ TEST(depthAveragedSeeding, ProjectedReleaseKeepsTheVolumeToRoundOff)
         double m = 0;
         for (label i = 0; i < s.p.size(); ++i)
         {
-            m += s.p.column(particleArrays::M)[i];
+            m += s.p.component(particleArrays::M)[i];
         }
         EXPECT_NEAR(m, rho*boxVolume, roundOff*rho*boxVolume) << shape;
     }

@@ -105,17 +105,17 @@ sums total(const particleArrays& p, const depthAveragedFields& f)
     const label F = f.F();
     for (label i = 0; i < p.size(); ++i)
     {
-        const double m = p.column(particleArrays::M)[i];
+        const double m = p.component(particleArrays::M)[i];
         s.m += m;
-        s.A += p.column(f.A())[i];
-        s.px += m*p.column(particleArrays::UX)[i];
-        s.py += m*p.column(particleArrays::UY)[i];
-        s.mx += m*p.column(particleArrays::X)[i];
-        s.my += m*p.column(particleArrays::Y)[i];
+        s.A += p.component(f.A())[i];
+        s.px += m*p.component(particleArrays::UX)[i];
+        s.py += m*p.component(particleArrays::UY)[i];
+        s.mx += m*p.component(particleArrays::X)[i];
+        s.my += m*p.component(particleArrays::Y)[i];
         s.area += std::abs
         (
-            p.column(F)[i]*p.column(F + 3)[i]
-          - p.column(F + 1)[i]*p.column(F + 2)[i]
+            p.component(F)[i]*p.component(F + 3)[i]
+          - p.component(F + 1)[i]*p.component(F + 2)[i]
         );
     }
     return s;
@@ -171,27 +171,27 @@ TEST(depthAveragedSplitting, HalvesKeepMassAreaMomentumAndCentreOfMass)
     label k = 0;
     for (label i = 0; i < n0; ++i)
     {
-        const double m0 = before.column(particleArrays::M)[i];
-        if (c.p.column(particleArrays::M)[i] == m0)
+        const double m0 = before.component(particleArrays::M)[i];
+        if (c.p.component(particleArrays::M)[i] == m0)
         {
             continue;
         }
         const label j = n0 + k++;
-        EXPECT_EQ(c.p.column(particleArrays::M)[i], 0.5*m0);
-        EXPECT_EQ(c.p.column(particleArrays::M)[j], 0.5*m0);
-        EXPECT_EQ(c.p.column(c.f.A())[j], 0.5*before.column(c.f.A())[i]);
+        EXPECT_EQ(c.p.component(particleArrays::M)[i], 0.5*m0);
+        EXPECT_EQ(c.p.component(particleArrays::M)[j], 0.5*m0);
+        EXPECT_EQ(c.p.component(c.f.A())[j], 0.5*before.component(c.f.A())[i]);
         EXPECT_EQ
         (
-            c.p.column(particleArrays::VOL)[j],
-            0.5*before.column(particleArrays::VOL)[i]
+            c.p.component(particleArrays::VOL)[j],
+            0.5*before.component(particleArrays::VOL)[i]
         );
         const label F = c.f.F();
         const double det0 =
-            before.column(F)[i]*before.column(F + 3)[i]
-          - before.column(F + 1)[i]*before.column(F + 2)[i];
+            before.component(F)[i]*before.component(F + 3)[i]
+          - before.component(F + 1)[i]*before.component(F + 2)[i];
         const double det1 =
-            c.p.column(F)[j]*c.p.column(F + 3)[j]
-          - c.p.column(F + 1)[j]*c.p.column(F + 2)[j];
+            c.p.component(F)[j]*c.p.component(F + 3)[j]
+          - c.p.component(F + 1)[j]*c.p.component(F + 2)[j];
         EXPECT_NEAR(det1, 0.5*det0, roundOff*std::abs(det0));
     }
     EXPECT_EQ(k, nSplit);

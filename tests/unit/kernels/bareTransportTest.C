@@ -106,15 +106,15 @@ void seedLayer
         {
             const label k = start + i + nSide*j;
             const double spacing = g.dx[0]/nPer;
-            p.column(particleArrays::X)[k] = (first + i + 0.5)*spacing;
-            p.column(particleArrays::Y)[k] = (first + j + 0.5)*spacing;
-            p.column(particleArrays::UX)[k] = u[0];
-            p.column(particleArrays::UY)[k] = u[1];
-            p.column(particleArrays::VOL)[k] = h0*seedArea;
-            p.column(particleArrays::M)[k] = rho*h0*seedArea;
+            p.component(particleArrays::X)[k] = (first + i + 0.5)*spacing;
+            p.component(particleArrays::Y)[k] = (first + j + 0.5)*spacing;
+            p.component(particleArrays::UX)[k] = u[0];
+            p.component(particleArrays::UY)[k] = u[1];
+            p.component(particleArrays::VOL)[k] = h0*seedArea;
+            p.component(particleArrays::M)[k] = rho*h0*seedArea;
             if (id >= 0)
             {
-                p.column(id)[k] = i + nSide*j;
+                p.component(id)[k] = i + nSide*j;
             }
         }
     }
@@ -169,8 +169,8 @@ TEST(bareTransportBenchmark, AdvectCarriesAUniformFlowExactly)
     double mean0[2] = {0, 0};
     for (label k = 0; k < p.size(); ++k)
     {
-        mean0[0] += p.column(particleArrays::X)[k]/p.size();
-        mean0[1] += p.column(particleArrays::Y)[k]/p.size();
+        mean0[0] += p.component(particleArrays::X)[k]/p.size();
+        mean0[1] += p.component(particleArrays::Y)[k]/p.size();
     }
 
     const double seedArea = g.dx[0]*g.dx[1]/(nPer*nPer);
@@ -180,14 +180,14 @@ TEST(bareTransportBenchmark, AdvectCarriesAUniformFlowExactly)
     double err = 0, mean[2] = {0, 0};
     for (label k = 0; k < p.size(); ++k)
     {
-        err = std::max(err, std::abs(p.column(particleArrays::UX)[k] - a[0]));
-        err = std::max(err, std::abs(p.column(particleArrays::UY)[k] - a[1]));
+        err = std::max(err, std::abs(p.component(particleArrays::UX)[k] - a[0]));
+        err = std::max(err, std::abs(p.component(particleArrays::UY)[k] - a[1]));
         for (int c = 0; c < 4; ++c)
         {
-            err = std::max(err, std::abs(p.column(gradU + c)[k]));
+            err = std::max(err, std::abs(p.component(gradU + c)[k]));
         }
-        mean[0] += p.column(particleArrays::X)[k]/p.size();
-        mean[1] += p.column(particleArrays::Y)[k]/p.size();
+        mean[0] += p.component(particleArrays::X)[k]/p.size();
+        mean[1] += p.component(particleArrays::Y)[k]/p.size();
     }
     EXPECT_LT(err, exactTol);
     for (int d = 0; d < 2; ++d)
@@ -215,8 +215,8 @@ TEST(bareTransportBenchmark, ShallowWaterKeepsALakeAtRestAndABlockCollapsesSymme
                 v,
                 std::hypot
                 (
-                    p.column(particleArrays::UX)[k],
-                    p.column(particleArrays::UY)[k]
+                    p.component(particleArrays::UX)[k],
+                    p.component(particleArrays::UY)[k]
                 )
             );
         }
@@ -253,18 +253,18 @@ TEST(bareTransportBenchmark, ShallowWaterKeepsALakeAtRestAndABlockCollapsesSymme
     }
 
     // Columns by their lattice index (re-binning reorders them)
-    const double* x = p.column(particleArrays::X);
-    const double* y = p.column(particleArrays::Y);
-    const double* ux = p.column(particleArrays::UX);
-    const double* uy = p.column(particleArrays::UY);
+    const double* x = p.component(particleArrays::X);
+    const double* y = p.component(particleArrays::Y);
+    const double* ux = p.component(particleArrays::UX);
+    const double* uy = p.component(particleArrays::UY);
     const double lo = first*g.dx[0]/nPer, hi = last*g.dx[0]/nPer;
     const double L = lo + hi;
     std::vector<label> at(p.size(), -1);
     double mass = 0, interior = 0;
     for (label k = 0; k < p.size(); ++k)
     {
-        mass += p.column(particleArrays::M)[k];
-        at[label(p.column(id)[k])] = k;
+        mass += p.component(particleArrays::M)[k];
+        at[label(p.component(id)[k])] = k;
         const double edge = std::min({x[k] - lo, y[k] - lo, hi - x[k], hi - y[k]});
         if (edge > 0.25*side)
         {

@@ -62,10 +62,10 @@ particleArrays makeParticles(const gridGeometry& g, const int dim)
     {
         for (int d = 0; d < 3; ++d)
         {
-            p.column(particleArrays::X + d)[i] =
+            p.component(particleArrays::X + d)[i] =
                 d < dim ? g.origin[d] + u(gen)*(g.upper(d) - g.origin[d]) : 0;
         }
-        p.column(particleArrays::M)[i] = 0.5 + u(gen);
+        p.component(particleArrays::M)[i] = 0.5 + u(gen);
     }
     p.sortByCell(g);
     return p;
@@ -87,7 +87,7 @@ void particlesToGrid
     particlesToGridMomentum<Dim>
     (
         g, schedule, kernel, p.stencilNodes(g), p.cellStart().data(),
-        affineColumnsOf<Dim>(p, gradU), mass, mom
+        affineArraysOf<Dim>(p, gradU), mass, mom
     );
 }
 
@@ -135,10 +135,10 @@ void checkLinearFieldRoundTrip(const Kernel& kernel, const bool linear)
             for (int b = 0; b < Dim; ++b)
             {
                 const double s = linear ? B[a][b] : 0;
-                v += s*p.column(particleArrays::X + b)[i];
-                p.column(gradU + a*Dim + b)[i] = s;
+                v += s*p.component(particleArrays::X + b)[i];
+                p.component(gradU + a*Dim + b)[i] = s;
             }
-            p.column(particleArrays::UX + a)[i] = v;
+            p.component(particleArrays::UX + a)[i] = v;
         }
     }
 
@@ -173,7 +173,7 @@ void checkLinearFieldRoundTrip(const Kernel& kernel, const bool linear)
     std::vector<std::vector<double>> before(Dim);
     for (int a = 0; a < Dim; ++a)
     {
-        double* u = p.column(particleArrays::UX + a);
+        double* u = p.component(particleArrays::UX + a);
         before[a].assign(u, u + p.size());
         std::fill(u, u + p.size(), 1e3);
     }
@@ -183,11 +183,11 @@ void checkLinearFieldRoundTrip(const Kernel& kernel, const bool linear)
     {
         for (int a = 0; a < Dim; ++a)
         {
-            ASSERT_NEAR(p.column(particleArrays::UX + a)[i], before[a][i],
+            ASSERT_NEAR(p.component(particleArrays::UX + a)[i], before[a][i],
                 exactTol);
             for (int b = 0; b < Dim; ++b)
             {
-                ASSERT_NEAR(p.column(gradU + a*Dim + b)[i],
+                ASSERT_NEAR(p.component(gradU + a*Dim + b)[i],
                     linear ? B[a][b] : 0, 1e-10);
             }
         }
@@ -207,16 +207,16 @@ void checkConservation(const Kernel& kernel)
     double mP = 0, momP[Dim] = {};
     for (label i = 0; i < p.size(); ++i)
     {
-        const double m = p.column(particleArrays::M)[i];
+        const double m = p.component(particleArrays::M)[i];
         mP += m;
         for (int a = 0; a < Dim; ++a)
         {
             const double v = u(gen);
-            p.column(particleArrays::UX + a)[i] = v;
+            p.component(particleArrays::UX + a)[i] = v;
             momP[a] += m*v;
             for (int b = 0; b < Dim; ++b)
             {
-                p.column(gradU + a*Dim + b)[i] = u(gen);
+                p.component(gradU + a*Dim + b)[i] = u(gen);
             }
         }
     }
@@ -255,7 +255,7 @@ void checkThreadIndependence(const Kernel& kernel)
     {
         for (int a = 0; a < Dim; ++a)
         {
-            p.column(particleArrays::UX + a)[i] = u(gen);
+            p.component(particleArrays::UX + a)[i] = u(gen);
         }
     }
     const int maxThreads = omp_get_max_threads();
@@ -351,12 +351,12 @@ TEST(transfers, StaleBinningWithinTheScheduleReachStaysRaceFreeAndConservative)
         {
             for (int d = 0; d < dim; ++d)
             {
-                double& x = p.column(particleArrays::X + d)[i];
+                double& x = p.component(particleArrays::X + d)[i];
                 x = std::min(std::max(x + u(gen)*g.dx[d], g.origin[d]),
                     g.upper(d));
-                p.column(particleArrays::UX + d)[i] = u(gen);
+                p.component(particleArrays::UX + d)[i] = u(gen);
             }
-            mP += p.column(particleArrays::M)[i];
+            mP += p.component(particleArrays::M)[i];
         }
         ASSERT_FALSE(p.sortByCell(g, schedule.maxStale()));
         const int maxThreads = omp_get_max_threads();

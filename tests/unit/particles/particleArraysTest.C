@@ -50,11 +50,11 @@ particleArrays randomParticles(const gridGeometry& g, const label n)
     std::uniform_real_distribution<double> u(0, 1);
     for (label i = 0; i < n; ++i)
     {
-        p.column(particleArrays::X)[i] = u(gen)*g.upper(0);
-        p.column(particleArrays::Y)[i] = u(gen)*g.upper(1);
-        p.column(particleArrays::M)[i] = 1 + i;
-        p.column(id)[i] = i;
-        p.column(tag + 2)[i] = 3.0*i;
+        p.component(particleArrays::X)[i] = u(gen)*g.upper(0);
+        p.component(particleArrays::Y)[i] = u(gen)*g.upper(1);
+        p.component(particleArrays::M)[i] = 1 + i;
+        p.component(id)[i] = i;
+        p.component(tag + 2)[i] = 3.0*i;
     }
     return p;
 }
@@ -82,12 +82,12 @@ TEST(particleArrays, AppendedParticlesTakeTheFieldsInitialValue)
     particleArrays p;
     const label h = p.addField("h", particleArrays::fieldKind::scalar, 2.5);
     p.append(3);
-    p.column(h)[0] = 7;
+    p.component(h)[0] = 7;
     p.append(2);
     EXPECT_EQ(p.size(), 5);
-    EXPECT_EQ(p.column(h)[0], 7);
-    EXPECT_EQ(p.column(h)[4], 2.5);
-    EXPECT_EQ(p.column(particleArrays::M)[4], 0);
+    EXPECT_EQ(p.component(h)[0], 7);
+    EXPECT_EQ(p.component(h)[4], 2.5);
+    EXPECT_EQ(p.component(particleArrays::M)[4], 0);
 }
 
 
@@ -95,7 +95,7 @@ TEST(particleArrays, FiniteFindsOneNaNOrInfinityInAnyColumn)
 {
     const gridGeometry g = grid2D();
     particleArrays p = randomParticles(g, 1001);
-    std::vector<label> all(p.nColumns());
+    std::vector<label> all(p.nComponentArrays());
     std::iota(all.begin(), all.end(), 0);
     EXPECT_TRUE(p.finite(all));
     const double bad[3] =
@@ -110,18 +110,18 @@ TEST(particleArrays, FiniteFindsOneNaNOrInfinityInAnyColumn)
         {
             for (const label i : {label(0), label(500), label(1000)})
             {
-                const double keep = p.column(c)[i];
-                p.column(c)[i] = b;
+                const double keep = p.component(c)[i];
+                p.component(c)[i] = b;
                 EXPECT_FALSE(p.finite(all))
                     << "value " << b << " column " << c << " particle " << i;
                 EXPECT_TRUE(p.finite({particleArrays::M}))
                     << "a column without it";
-                p.column(c)[i] = keep;
+                p.component(c)[i] = keep;
             }
         }
     }
     // Large finite values are finite
-    p.column(particleArrays::M)[7] = std::numeric_limits<double>::max();
+    p.component(particleArrays::M)[7] = std::numeric_limits<double>::max();
     EXPECT_TRUE(p.finite(all));
 }
 
@@ -143,18 +143,18 @@ TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
     {
         for (label i = cellStart[c]; i < cellStart[c + 1]; ++i)
         {
-            const double* x = p.column(particleArrays::X);
-            const double* y = p.column(particleArrays::Y);
+            const double* x = p.component(particleArrays::X);
+            const double* y = p.component(particleArrays::Y);
             EXPECT_EQ(g.cellOf(x[i], y[i], 0), c);
             EXPECT_EQ(p.cell()[i], c);
-            const label orig = label(p.column(id)[i]);
+            const label orig = label(p.component(id)[i]);
             ++seen[orig];
-            EXPECT_EQ(p.column(particleArrays::M)[i], 1.0 + orig);
-            EXPECT_EQ(p.column(tag + 2)[i], 3.0*orig);
+            EXPECT_EQ(p.component(particleArrays::M)[i], 1.0 + orig);
+            EXPECT_EQ(p.component(tag + 2)[i], 3.0*orig);
             // Stable: within a cell the original order is kept
             if (i > cellStart[c])
             {
-                EXPECT_LT(p.column(id)[i - 1], p.column(id)[i]);
+                EXPECT_LT(p.component(id)[i - 1], p.component(id)[i]);
             }
         }
     }
@@ -173,7 +173,7 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
     const std::vector<label> cellStart = p.cellStart();
 
     // Every particle moves by less than one cell: the binning is kept
-    double* x = p.column(particleArrays::X);
+    double* x = p.component(particleArrays::X);
     for (label i = 0; i < p.size(); ++i)
     {
         x[i] = std::min(std::max(x[i] + 0.9*g.dx[0]*((i % 3) - 1), 0.0),
@@ -213,9 +213,9 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
     std::uniform_real_distribution<double> u(0, 1);
     double* x[3] =
     {
-        p.column(particleArrays::X),
-        p.column(particleArrays::Y),
-        p.column(particleArrays::Z)
+        p.component(particleArrays::X),
+        p.component(particleArrays::Y),
+        p.component(particleArrays::Z)
     };
     for (label i = 0; i < n; ++i)
     {
@@ -229,7 +229,7 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
     // sort moved the columns: their addresses again)
     for (int d = 0; d < 3; ++d)
     {
-        x[d] = p.column(particleArrays::X + d);
+        x[d] = p.component(particleArrays::X + d);
     }
     for (label i = 0; i < n; ++i)
     {
@@ -301,8 +301,8 @@ TEST(particleArrays, RemoveFlaggedKeepsOrderOfTheRest)
     {
         if (!flagged[i])
         {
-            EXPECT_EQ(p.column(id)[k], i);
-            EXPECT_EQ(p.column(particleArrays::M)[k], 1.0 + i);
+            EXPECT_EQ(p.component(id)[k], i);
+            EXPECT_EQ(p.component(particleArrays::M)[k], 1.0 + i);
             ++k;
         }
     }

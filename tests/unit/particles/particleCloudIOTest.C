@@ -51,14 +51,14 @@ particleArrays makeCloud(const label n)
     std::uniform_real_distribution<double> u(0.01, 0.99);
     for (label i = 0; i < n; ++i)
     {
-        p.column(particleArrays::X)[i] = 10*u(gen);
-        p.column(particleArrays::Y)[i] = 5*u(gen);
-        p.column(particleArrays::Z)[i] = u(gen);
-        p.column(particleArrays::UX)[i] = u(gen) - 0.5;
-        p.column(particleArrays::UY)[i] = 2*u(gen);
-        p.column(particleArrays::M)[i] = 1000*u(gen);
-        p.column(particleArrays::VOL)[i] = u(gen);
-        p.column(h)[i] = 1.0/3.0 + i;
+        p.component(particleArrays::X)[i] = 10*u(gen);
+        p.component(particleArrays::Y)[i] = 5*u(gen);
+        p.component(particleArrays::Z)[i] = u(gen);
+        p.component(particleArrays::UX)[i] = u(gen) - 0.5;
+        p.component(particleArrays::UY)[i] = 2*u(gen);
+        p.component(particleArrays::M)[i] = 1000*u(gen);
+        p.component(particleArrays::VOL)[i] = u(gen);
+        p.component(h)[i] = 1.0/3.0 + i;
     }
     return p;
 }
@@ -128,10 +128,10 @@ TEST(particleCloudIOCase, FoamToVTKShowsEveryParticleWithItsFields)
     for (label i = 0; i < p.size(); ++i)
     {
         // foamToVTK writes floats with 6 significant digits
-        EXPECT_NEAR(pts[3*i], p.column(particleArrays::X)[i], vtkTol*10);
-        EXPECT_NEAR(pts[3*i + 1], p.column(particleArrays::Y)[i], vtkTol*5);
-        EXPECT_NEAR(h[i], p.column(hc)[i], vtkTol*p.column(hc)[i]);
-        EXPECT_NEAR(U[3*i + 1], p.column(particleArrays::UY)[i], vtkTol*2);
+        EXPECT_NEAR(pts[3*i], p.component(particleArrays::X)[i], vtkTol*10);
+        EXPECT_NEAR(pts[3*i + 1], p.component(particleArrays::Y)[i], vtkTol*5);
+        EXPECT_NEAR(h[i], p.component(hc)[i], vtkTol*p.component(hc)[i]);
+        EXPECT_NEAR(U[3*i + 1], p.component(particleArrays::UY)[i], vtkTol*2);
     }
     EXPECT_TRUE(vtpArray(vtk, "scratch").empty());
 }
@@ -179,14 +179,14 @@ TEST(particleCloudIOCase, CloudReadsBackBitForBitInAsciiAndBinary)
         {
             for (label i = 0; i < p.size(); ++i)
             {
-                EXPECT_EQ(q.column(c)[i], p.column(c)[i])
+                EXPECT_EQ(q.component(c)[i], p.component(c)[i])
                     << "column " << c << ", particle " << i;
             }
         }
         for (label i = 0; i < p.size(); ++i)
         {
-            EXPECT_EQ(q.column(q.field("h").first)[i],
-                p.column(p.field("h").first)[i]);
+            EXPECT_EQ(q.component(q.field("h").first)[i],
+                p.component(p.field("h").first)[i]);
         }
     }
     // The binary file is binary (OpenFOAM's header says so)
@@ -249,7 +249,7 @@ TEST(particleCloudIOCase, MissingFieldShortListAndBadValuesAreRefused)
         particleArrays::X})
     {
         particleArrays bad(p);
-        bad.column(c)[7] = c == particleArrays::M ? -1 : 1e200;
+        bad.component(c)[7] = c == particleArrays::M ? -1 : 1e200;
         try
         {
             particleCloudIO::checkCloud(bad, grid, cloud);

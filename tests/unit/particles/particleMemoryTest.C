@@ -93,7 +93,7 @@ TEST(particleMemory, BytesPerParticleCountEveryColumn)
     const double standard = particleMemory::bytesPerParticle(p);
     p.addField("sigma", particleArrays::fieldKind::symmTensor);
     p.addField("work", particleArrays::fieldKind::internal, 0, 5);
-    EXPECT_EQ(p.nColumns(), 8 + 6 + 5);
+    EXPECT_EQ(p.nComponentArrays(), 8 + 6 + 5);
     EXPECT_EQ(particleMemory::bytesPerParticle(p) - standard, 11*8);
     // The columns, the sort's scratch column, the cell and order labels
     // and the solvers' work arrays
@@ -132,7 +132,7 @@ TEST(particleMemory, RequestBeyondTheMemoryIsRefusedBeforeAllocating)
     {
         p.addField
         (
-            "pad" + std::to_string(p.nColumns()),
+            "pad" + std::to_string(p.nComponentArrays()),
             particleArrays::fieldKind::internal,
             0,
             100
@@ -167,12 +167,12 @@ TEST(particleMemory, WhatFitsIsReservedAtOnce)
     particleArrays p;
     p.append(10);
     particleMemory::reserve(p, 5000, "the test");
-    const double* x = p.column(particleArrays::X);
-    const double* m = p.column(particleArrays::M);
+    const double* x = p.component(particleArrays::X);
+    const double* m = p.component(particleArrays::M);
     p.append(5000);
     // No reallocation: the arrays held the room
-    EXPECT_EQ(p.column(particleArrays::X), x);
-    EXPECT_EQ(p.column(particleArrays::M), m);
+    EXPECT_EQ(p.component(particleArrays::X), x);
+    EXPECT_EQ(p.component(particleArrays::M), m);
     EXPECT_EQ(p.size(), 5010);
 }
 

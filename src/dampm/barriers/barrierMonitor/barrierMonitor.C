@@ -170,10 +170,10 @@ Foam::scalar Foam::barrierMonitor::overtoppingMass
         return 0;
     }
     const label n = particles.size();
-    const double* x = particles.column(particleArrays::X);
-    const double* y = particles.column(particleArrays::Y);
-    const double* z = particles.column(particleArrays::Z);
-    const double* m = particles.column(particleArrays::M);
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* z = particles.component(particleArrays::Z);
+    const double* m = particles.component(particleArrays::M);
     double passedMass[1], none[1];
     orderedSums<1, 0>(n, passedMass, none, [&](label i, double* s, double*)
     {
@@ -186,7 +186,7 @@ Foam::scalar Foam::barrierMonitor::overtoppingMass
 void Foam::barrierMonitor::execute
 (
     const vector& force,
-    const mpm3DGrid& grid,
+    const mpm3dGrid& grid,
     const double massTol,
     const scalar t
 )

@@ -203,7 +203,7 @@ void Foam::nodeContact::warnIfThin(const gridGeometry& g) const
 
 void Foam::nodeContact::apply
 (
-    mpm3DGrid& grid,
+    mpm3dGrid& grid,
     const double massTol,
     const double dt
 )

@@ -183,7 +183,7 @@ bool Foam::particleGuard::mayBeDeep
 void Foam::particleGuard::markEntered
 (
     const gridGeometry& g,
-    const mpm3DParticles& p
+    const mpm3dParticles& p
 )
 {
     // In chunks: bounded scratch, and a virtual call per chunk, not per
@@ -254,7 +254,7 @@ Foam::label Foam::particleGuard::stopEntries
 (
     const gridGeometry& g,
     const double* const x0[3],
-    const mpm3DParticles& p,
+    const mpm3dParticles& p,
     const double dt
 )
 {

@@ -277,20 +277,20 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
                     const scalar wBed = u*gradG.x() + v*gradG.y();
                     const scalar w = wBed - zeta*col.h*divU;
 
-                    particles3D.column(particleArrays::X)[i] = px;
-                    particles3D.column(particleArrays::Y)[i] = py;
-                    particles3D.column(particleArrays::Z)[i] = G + zeta*col.h;
-                    particles3D.column(particleArrays::UX)[i] = u;
-                    particles3D.column(particleArrays::UY)[i] = v;
-                    particles3D.column(particleArrays::UZ)[i] = w;
-                    particles3D.column(particleArrays::M)[i] = mp;
-                    particles3D.column(particleArrays::VOL)[i] = J*V0p;
-                    particles3D.column(pField)[i] = p;
-                    particles3D.column(JField)[i] = J;
+                    particles3D.component(particleArrays::X)[i] = px;
+                    particles3D.component(particleArrays::Y)[i] = py;
+                    particles3D.component(particleArrays::Z)[i] = G + zeta*col.h;
+                    particles3D.component(particleArrays::UX)[i] = u;
+                    particles3D.component(particleArrays::UY)[i] = v;
+                    particles3D.component(particleArrays::UZ)[i] = w;
+                    particles3D.component(particleArrays::M)[i] = mp;
+                    particles3D.component(particleArrays::VOL)[i] = J*V0p;
+                    particles3D.component(pField)[i] = p;
+                    particles3D.component(JField)[i] = J;
                     // xx, yy, zz of the symmetric tensor
-                    particles3D.column(sigma)[i] = -p;
-                    particles3D.column(sigma + 3)[i] = -p;
-                    particles3D.column(sigma + 5)[i] = -p;
+                    particles3D.component(sigma)[i] = -p;
+                    particles3D.component(sigma + 3)[i] = -p;
+                    particles3D.component(sigma + 5)[i] = -p;
 
                     mSum += mp;
                     VSum += V0p;

@@ -130,12 +130,12 @@ void Foam::runOutMaps::update(const particleArrays& particles)
 
     // Bilinear scatter (serial: once per step onto a 2D grid)
     const label n = particles.size();
-    const double* x = particles.column(particleArrays::X);
-    const double* y = particles.column(particleArrays::Y);
-    const double* ux = particles.column(particleArrays::UX);
-    const double* uy = particles.column(particleArrays::UY);
-    const double* m = particles.column(particleArrays::M);
-    const double* V = particles.column(particleArrays::VOL);
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* ux = particles.component(particleArrays::UX);
+    const double* uy = particles.component(particleArrays::UY);
+    const double* m = particles.component(particleArrays::M);
+    const double* V = particles.component(particleArrays::VOL);
     int32_t lo[2] = {g.nCells[0], g.nCells[1]}, hi[2] = {0, 0};
     for (label p = 0; p < n; ++p)
     {

@@ -60,7 +60,7 @@ Foam::bareTransport::bareTransport
     // Footprints of the seed lattice
     for (int d = 0; d < 2; ++d)
     {
-        std::fill_n(p.column(F_ + 3*d), p.size(), g.dx[d]/nPerCell);
+        std::fill_n(p.component(F_ + 3*d), p.size(), g.dx[d]/nPerCell);
     }
     nodalAreas(g, quadraticBSplineKernel(), nPerCell, nodes_.area.data());
 }
@@ -76,23 +76,23 @@ Foam::shallowColumns Foam::bareTransport::columns
 {
     shallowColumns cols;
     cols.n = p.size();
-    cols.x = p.column(particleArrays::X);
-    cols.y = p.column(particleArrays::Y);
-    cols.ux = p.column(particleArrays::UX);
-    cols.uy = p.column(particleArrays::UY);
-    cols.m = p.column(particleArrays::M);
-    cols.V = p.column(particleArrays::VOL);
+    cols.x = p.component(particleArrays::X);
+    cols.y = p.component(particleArrays::Y);
+    cols.ux = p.component(particleArrays::UX);
+    cols.uy = p.component(particleArrays::UY);
+    cols.m = p.component(particleArrays::M);
+    cols.V = p.component(particleArrays::VOL);
     for (int k = 0; k < 4; ++k)
     {
-        cols.C[k] = p.column(gradU + k);
+        cols.C[k] = p.component(gradU + k);
     }
     if (h_ >= 0)
     {
-        cols.h = p.column(h_);
-        cols.a = p.column(a_);
-        cols.kappa = p.column(kappa_);
-        cols.gradZetaX = p.column(gradZeta_);
-        cols.gradZetaY = p.column(gradZeta_ + 1);
+        cols.h = p.component(h_);
+        cols.a = p.component(a_);
+        cols.kappa = p.component(kappa_);
+        cols.gradZetaX = p.component(gradZeta_);
+        cols.gradZetaY = p.component(gradZeta_ + 1);
     }
     return cols;
 }
@@ -131,16 +131,16 @@ void Foam::bareTransport::move
 )
 {
     const label n = p.size();
-    double* x = p.column(particleArrays::X);
-    double* y = p.column(particleArrays::Y);
-    const double* ux = p.column(particleArrays::UX);
-    const double* uy = p.column(particleArrays::UY);
+    double* x = p.component(particleArrays::X);
+    double* y = p.component(particleArrays::Y);
+    const double* ux = p.component(particleArrays::UX);
+    const double* uy = p.component(particleArrays::UY);
     double* C[4] = {};
     double* F[4] = {};
     for (int k = 0; F_ >= 0 && k < 4; ++k)
     {
-        C[k] = p.column(gradU + k);
-        F[k] = p.column(F_ + k);
+        C[k] = p.component(gradU + k);
+        F[k] = p.component(F_ + k);
     }
     auto loop = [&](auto footprints)
     {

@@ -41,14 +41,14 @@ Foam::depthAveragedDiagnostics::totals Foam::depthAveragedDiagnostics::sum
 )
 {
     const label n = particles.size();
-    const double* x = particles.column(particleArrays::X);
-    const double* y = particles.column(particleArrays::Y);
-    const double* ux = particles.column(particleArrays::UX);
-    const double* uy = particles.column(particleArrays::UY);
-    const double* m = particles.column(particleArrays::M);
-    const double* h = particles.column(fields.h());
-    const double* gx = particles.column(fields.gradZ());
-    const double* gy = particles.column(fields.gradZ() + 1);
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* ux = particles.component(particleArrays::UX);
+    const double* uy = particles.component(particleArrays::UY);
+    const double* m = particles.component(particleArrays::M);
+    const double* h = particles.component(fields.h());
+    const double* gx = particles.component(fields.gradZ());
+    const double* gy = particles.component(fields.gradZ() + 1);
 
     // The same rounding on any number of threads; a flat bed reads no
     // gradient

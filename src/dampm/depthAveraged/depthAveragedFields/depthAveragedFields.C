@@ -58,17 +58,17 @@ Foam::runOutFields Foam::depthAveragedFields::runOut
 {
     runOutFields v;
     v.n = particles.size();
-    v.x = particles.column(particleArrays::X);
-    v.y = particles.column(particleArrays::Y);
-    v.ux = particles.column(particleArrays::UX);
-    v.uy = particles.column(particleArrays::UY);
-    v.m = particles.column(particleArrays::M);
-    v.V = particles.column(particleArrays::VOL);
-    v.A = particles.column(A_);
+    v.x = particles.component(particleArrays::X);
+    v.y = particles.component(particleArrays::Y);
+    v.ux = particles.component(particleArrays::UX);
+    v.uy = particles.component(particleArrays::UY);
+    v.m = particles.component(particleArrays::M);
+    v.V = particles.component(particleArrays::VOL);
+    v.A = particles.component(A_);
     for (int k = 0; k < 4; ++k)
     {
-        v.F[k] = particles.column(F_ + k);
-        v.gradU[k] = particles.column(gradU_ + k);
+        v.F[k] = particles.component(F_ + k);
+        v.gradU[k] = particles.component(gradU_ + k);
     }
     return v;
 }

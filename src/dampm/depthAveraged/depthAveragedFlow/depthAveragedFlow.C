@@ -58,21 +58,21 @@ void Foam::depthAveragedFlow::bindCommon(View& v)
 {
     particleArrays& p = particles_;
     v.n = p.size();
-    v.m = p.column(particleArrays::M);
-    v.h = p.column(fields_.h());
-    v.a = p.column(fields_.A());
-    v.kappa = p.column(fields_.kappa());
+    v.m = p.component(particleArrays::M);
+    v.h = p.component(fields_.h());
+    v.a = p.component(fields_.A());
+    v.kappa = p.component(fields_.kappa());
     for (int k = 0; k < 4; ++k)
     {
-        v.C[k] = p.column(fields_.gradU() + k);
+        v.C[k] = p.component(fields_.gradU() + k);
     }
     // In-plane components xx, xy, yy of the symmTensor field
-    v.sigma[0] = p.column(fields_.sigma());
-    v.sigma[1] = p.column(fields_.sigma() + 1);
-    v.sigma[2] = p.column(fields_.sigma() + 3);
-    v.s = p.column(fields_.basal());
-    v.k1 = p.column(fields_.basal() + 1);
-    v.k2 = p.column(fields_.basal() + 2);
+    v.sigma[0] = p.component(fields_.sigma());
+    v.sigma[1] = p.component(fields_.sigma() + 1);
+    v.sigma[2] = p.component(fields_.sigma() + 3);
+    v.s = p.component(fields_.basal());
+    v.k1 = p.component(fields_.basal() + 1);
+    v.k2 = p.component(fields_.basal() + 2);
 }
 
 
@@ -81,16 +81,16 @@ Foam::shallowColumns Foam::depthAveragedFlow::columns()
     particleArrays& p = particles_;
     shallowColumns c;
     bindCommon(c);
-    c.x = p.column(particleArrays::X);
-    c.y = p.column(particleArrays::Y);
-    c.ux = p.column(particleArrays::UX);
-    c.uy = p.column(particleArrays::UY);
-    c.V = p.column(particleArrays::VOL);
-    c.Zb = p.column(fields_.Zb());
-    c.gradZetaX = p.column(fields_.gradZeta());
-    c.gradZetaY = p.column(fields_.gradZeta() + 1);
-    c.gradZx = p.column(fields_.gradZ());
-    c.gradZy = p.column(fields_.gradZ() + 1);
+    c.x = p.component(particleArrays::X);
+    c.y = p.component(particleArrays::Y);
+    c.ux = p.component(particleArrays::UX);
+    c.uy = p.component(particleArrays::UY);
+    c.V = p.component(particleArrays::VOL);
+    c.Zb = p.component(fields_.Zb());
+    c.gradZetaX = p.component(fields_.gradZeta());
+    c.gradZetaY = p.component(fields_.gradZeta() + 1);
+    c.gradZx = p.component(fields_.gradZ());
+    c.gradZy = p.component(fields_.gradZ() + 1);
     return c;
 }
 
@@ -127,10 +127,10 @@ Foam::scalar Foam::depthAveragedFlow::maxColumnThickness() const
     const label Fc = fields_.F();
     const double* F[4] =
     {
-        particles_.column(Fc), particles_.column(Fc + 1),
-        particles_.column(Fc + 2), particles_.column(Fc + 3)
+        particles_.component(Fc), particles_.component(Fc + 1),
+        particles_.component(Fc + 2), particles_.component(Fc + 3)
     };
-    const double* V = particles_.column(particleArrays::VOL);
+    const double* V = particles_.component(particleArrays::VOL);
     double hMax = 0;
     for (label i = 0; i < n; ++i)
     {
@@ -144,9 +144,9 @@ Foam::scalar Foam::depthAveragedFlow::maxColumnThickness() const
 Foam::scalar Foam::depthAveragedFlow::speedScale() const
 {
     const label n = particles_.size();
-    const double* ux = particles_.column(particleArrays::UX);
-    const double* uy = particles_.column(particleArrays::UY);
-    const double* h = particles_.column(fields_.h());
+    const double* ux = particles_.component(particleArrays::UX);
+    const double* uy = particles_.component(particleArrays::UY);
+    const double* h = particles_.component(fields_.h());
     double wave = 0, hMax = 0;
     for (label i = 0; i < n; ++i)
     {
@@ -280,7 +280,7 @@ void Foam::depthAveragedFlow::setStartDefaults()
     scalar mMax = 0;
     for (label i = 0; i < particles_.size(); ++i)
     {
-        mMax = max(mMax, particles_.column(particleArrays::M)[i]);
+        mMax = max(mMax, particles_.component(particleArrays::M)[i]);
     }
     massTol_ = 1e-12*mMax;
     releaseThickness_ = speedLimit::threeDigits(maxColumnThickness());
@@ -311,10 +311,10 @@ void Foam::depthAveragedFlow::detectFlatBed()
     if (terrainFree_)
     {
         const label n = particles_.size();
-        std::fill_n(particles_.column(fields_.Zb()), n, 0.0);
-        std::fill_n(particles_.column(fields_.gradZ()), n, 0.0);
-        std::fill_n(particles_.column(fields_.gradZ() + 1), n, 0.0);
-        std::fill_n(particles_.column(fields_.kappa()), n, 1.0);
+        std::fill_n(particles_.component(fields_.Zb()), n, 0.0);
+        std::fill_n(particles_.component(fields_.gradZ()), n, 0.0);
+        std::fill_n(particles_.component(fields_.gradZ() + 1), n, 0.0);
+        std::fill_n(particles_.component(fields_.kappa()), n, 1.0);
     }
 }
 
@@ -539,9 +539,9 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
 {
     const gridGeometry& g = grid_.geometry();
     const label n = particles_.size();
-    const double* ux = particles_.column(particleArrays::UX);
-    const double* uy = particles_.column(particleArrays::UY);
-    const double* h = particles_.column(fields_.h());
+    const double* ux = particles_.component(particleArrays::UX);
+    const double* uy = particles_.component(particleArrays::UY);
+    const double* h = particles_.component(fields_.h());
     const double gravity = g_;
 
     // Elastic wave speed squared of a Maxwell stress (0 if viscous)
@@ -617,7 +617,7 @@ void Foam::depthAveragedFlow::computeForces()
     {
         for (int k = 0; k < 3; ++k)
         {
-            zeroArray(particles_.column(fields_.basal() + k), particles_.size());
+            zeroArray(particles_.component(fields_.basal() + k), particles_.size());
         }
         if (friction_->active())
         {
@@ -694,20 +694,20 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     const label Cc = fields_.gradU();
     double* F[4] =
     {
-        particles_.column(Fc), particles_.column(Fc + 1),
-        particles_.column(Fc + 2), particles_.column(Fc + 3)
+        particles_.component(Fc), particles_.component(Fc + 1),
+        particles_.component(Fc + 2), particles_.component(Fc + 3)
     };
     double* C[4] =
     {
-        particles_.column(Cc), particles_.column(Cc + 1),
-        particles_.column(Cc + 2), particles_.column(Cc + 3)
+        particles_.component(Cc), particles_.component(Cc + 1),
+        particles_.component(Cc + 2), particles_.component(Cc + 3)
     };
-    double* x = particles_.column(particleArrays::X);
-    double* y = particles_.column(particleArrays::Y);
-    double* ux = particles_.column(particleArrays::UX);
-    double* uy = particles_.column(particleArrays::UY);
-    const double* m = particles_.column(particleArrays::M);
-    const double* V = particles_.column(particleArrays::VOL);
+    double* x = particles_.component(particleArrays::X);
+    double* y = particles_.component(particleArrays::Y);
+    double* ux = particles_.component(particleArrays::UX);
+    double* uy = particles_.component(particleArrays::UY);
+    const double* m = particles_.component(particleArrays::M);
+    const double* V = particles_.component(particleArrays::VOL);
     flagged_.resize(n);
     std::vector<char>& splitFlags = splitting_.flags(n);
     const domainSides sides = sides_;
@@ -790,14 +790,14 @@ void Foam::depthAveragedFlow::updateOutputFields()
     const scalar eps = 1e-6*max(zHi - zLo, scalar(1));
 
     const label n = particles_.size();
-    double* z = particles_.column(particleArrays::Z);
-    double* uz = particles_.column(particleArrays::UZ);
-    const double* ux = particles_.column(particleArrays::UX);
-    const double* uy = particles_.column(particleArrays::UY);
-    const double* h = particles_.column(fields_.h());
-    const double* Zb = particles_.column(fields_.Zb());
-    const double* gx = particles_.column(fields_.gradZ());
-    const double* gy = particles_.column(fields_.gradZ() + 1);
+    double* z = particles_.component(particleArrays::Z);
+    double* uz = particles_.component(particleArrays::UZ);
+    const double* ux = particles_.component(particleArrays::UX);
+    const double* uy = particles_.component(particleArrays::UY);
+    const double* h = particles_.component(fields_.h());
+    const double* Zb = particles_.component(fields_.Zb());
+    const double* gx = particles_.component(fields_.gradZ());
+    const double* gy = particles_.component(fields_.gradZ() + 1);
 
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)

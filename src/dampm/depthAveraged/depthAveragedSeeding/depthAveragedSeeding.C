@@ -118,16 +118,16 @@ void Foam::depthAveragedSeeding::seed
     }
 
     const label first = particles.append(label(x.size()));
-    double* px = particles.column(particleArrays::X);
-    double* py = particles.column(particleArrays::Y);
-    double* ux = particles.column(particleArrays::UX);
-    double* uy = particles.column(particleArrays::UY);
-    double* V = particles.column(particleArrays::VOL);
-    double* m = particles.column(particleArrays::M);
-    double* ph = particles.column(fields.h());
-    double* A = particles.column(fields.A());
-    double* Fxx = particles.column(fields.F());
-    double* Fyy = particles.column(fields.F() + 3);
+    double* px = particles.component(particleArrays::X);
+    double* py = particles.component(particleArrays::Y);
+    double* ux = particles.component(particleArrays::UX);
+    double* uy = particles.component(particleArrays::UY);
+    double* V = particles.component(particleArrays::VOL);
+    double* m = particles.component(particleArrays::M);
+    double* ph = particles.component(fields.h());
+    double* A = particles.component(fields.A());
+    double* Fxx = particles.component(fields.F());
+    double* Fyy = particles.component(fields.F() + 3);
     for (size_t k = 0; k < x.size(); ++k)
     {
         const label i = first + label(k);

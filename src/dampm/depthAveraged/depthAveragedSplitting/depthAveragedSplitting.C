@@ -111,12 +111,12 @@ Foam::label Foam::depthAveragedSplitting::split
         const splitRule r = rule();
         const double* F[4] =
         {
-            particles.column(Fc0), particles.column(Fc0 + 1),
-            particles.column(Fc0 + 2), particles.column(Fc0 + 3)
+            particles.component(Fc0), particles.component(Fc0 + 1),
+            particles.component(Fc0 + 2), particles.component(Fc0 + 3)
         };
-        const double* x = particles.column(particleArrays::X);
-        const double* y = particles.column(particleArrays::Y);
-        const double* V = particles.column(particleArrays::VOL);
+        const double* x = particles.component(particleArrays::X);
+        const double* y = particles.component(particleArrays::Y);
+        const double* V = particles.component(particleArrays::VOL);
         flags_.resize(n);
 
         #pragma omp parallel for schedule(static)
@@ -144,9 +144,9 @@ Foam::label Foam::depthAveragedSplitting::split
     // append may move the arrays: pointers are taken after it)
     const label first = particles.append(nSplit);
     const label* parent = list_.data();
-    for (label c = 0; c < particles.nColumns(); ++c)
+    for (label c = 0; c < particles.nComponentArrays(); ++c)
     {
-        double* col = particles.column(c);
+        double* col = particles.component(c);
         #pragma omp parallel for schedule(static)
         for (label k = 0; k < nSplit; ++k)
         {
@@ -156,21 +156,21 @@ Foam::label Foam::depthAveragedSplitting::split
 
     double* F[4] =
     {
-        particles.column(Fc0), particles.column(Fc0 + 1),
-        particles.column(Fc0 + 2), particles.column(Fc0 + 3)
+        particles.component(Fc0), particles.component(Fc0 + 1),
+        particles.component(Fc0 + 2), particles.component(Fc0 + 3)
     };
     const double* C[4] =
     {
-        particles.column(Cc0), particles.column(Cc0 + 1),
-        particles.column(Cc0 + 2), particles.column(Cc0 + 3)
+        particles.component(Cc0), particles.component(Cc0 + 1),
+        particles.component(Cc0 + 2), particles.component(Cc0 + 3)
     };
-    double* x = particles.column(particleArrays::X);
-    double* y = particles.column(particleArrays::Y);
-    double* ux = particles.column(particleArrays::UX);
-    double* uy = particles.column(particleArrays::UY);
-    double* m = particles.column(particleArrays::M);
-    double* V = particles.column(particleArrays::VOL);
-    double* A = particles.column(fields.A());
+    double* x = particles.component(particleArrays::X);
+    double* y = particles.component(particleArrays::Y);
+    double* ux = particles.component(particleArrays::UX);
+    double* uy = particles.component(particleArrays::UY);
+    double* m = particles.component(particleArrays::M);
+    double* V = particles.component(particleArrays::VOL);
+    double* A = particles.component(fields.A());
 
     // The halves: mass, volume and basal area halved (exactly), positions
     // at the centroids of the two halves of the footprint and velocities

@@ -224,9 +224,9 @@ bool Foam::handOff::due
     }
 
     // Front columns in the search box: their bed points and depths
-    const double* x = columns.column(particleArrays::X);
-    const double* y = columns.column(particleArrays::Y);
-    const double* h = columns.column(hField);
+    const double* x = columns.component(particleArrays::X);
+    const double* y = columns.component(particleArrays::Y);
+    const double* h = columns.component(hField);
     const boundBox& sb = searchBox_;
     DynamicList<point> bed;
     DynamicList<scalar> depth;
@@ -290,8 +290,8 @@ Foam::string Foam::handOff::reason(const particleArrays& columns) const
     }
     // The column is found by its position: the write may have re-sorted
     // the columns since due() (positions do not change)
-    const double* x = columns.column(particleArrays::X);
-    const double* y = columns.column(particleArrays::Y);
+    const double* x = columns.component(particleArrays::X);
+    const double* y = columns.component(particleArrays::Y);
     label index = -1;
     for (label i = 0; i < columns.size() && index < 0; ++i)
     {

@@ -80,7 +80,7 @@ void Foam::materialModels::DruckerPrager::updateStress
 ) const
 {
     typedef materialParticles::tensor3 tensor3;
-    double* epsP = particles.column(plasticStrain_);
+    double* epsP = particles.component(plasticStrain_);
     const double alpha = alpha_, alphaPsi = alphaPsi_, k = k_;
     const double G = G_, K = K_;
 

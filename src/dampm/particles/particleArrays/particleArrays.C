@@ -61,13 +61,13 @@ Foam::label Foam::particleArrays::addField
 
     const label nComp =
         kind == fieldKind::internal ? nInternalComponents : nComponents(kind);
-    const label first = nColumns();
+    const label first = nComponentArrays();
 
     fields_.push_back(fieldInfo{name, kind, nComp, first, initialValue});
     for (label c = 0; c < nComp; ++c)
     {
-        columns_.emplace_back(size_, initialValue);
-        columns_.back().reserve(cell_.capacity());
+        components_.emplace_back(size_, initialValue);
+        components_.back().reserve(cell_.capacity());
     }
     return first;
 }
@@ -104,7 +104,7 @@ Foam::particleArrays::field(const word& name) const
 
 void Foam::particleArrays::reserve(const label n)
 {
-    for (columnArray& c : columns_)
+    for (componentArray& c : components_)
     {
         c.reserve(n);
     }
@@ -122,7 +122,7 @@ Foam::label Foam::particleArrays::append(const label n)
     {
         for (label c = f.first; c < f.first + f.nComponents; ++c)
         {
-            columns_[c].resize(size_, f.initialValue);
+            components_[c].resize(size_, f.initialValue);
         }
     }
     cell_.resize(size_, 0);
@@ -150,14 +150,14 @@ Foam::label Foam::particleArrays::removeFlagged
     {
         // Stable compaction: order_[k] >= k, so copying forwards is safe
         #pragma omp parallel for schedule(static)
-        for (label c = 0; c < nColumns(); ++c)
+        for (label c = 0; c < nComponentArrays(); ++c)
         {
-            double* col = columns_[c].data();
+            double* array = components_[c].data();
             for (label k = 0; k < n; ++k)
             {
-                col[k] = col[order_[k]];
+                array[k] = array[order_[k]];
             }
-            columns_[c].resize(n);
+            components_[c].resize(n);
         }
         for (label k = 0; k < n; ++k)
         {
@@ -177,7 +177,7 @@ Foam::label Foam::particleArrays::removeFlagged
 
 void Foam::particleArrays::clear()
 {
-    for (columnArray& c : columns_)
+    for (componentArray& c : components_)
     {
         c.clear();
     }
@@ -190,10 +190,10 @@ void Foam::particleArrays::clear()
 void Foam::particleArrays::permute()
 {
     scratch_.resize(size_);
-    for (columnArray& col : columns_)
+    for (componentArray& array : components_)
     {
         double* s = scratch_.data();
-        const double* src = col.data();
+        const double* src = array.data();
         const label* ord = order_.data();
 
         #pragma omp parallel for schedule(static)
@@ -201,7 +201,7 @@ void Foam::particleArrays::permute()
         {
             s[k] = src[ord[k]];
         }
-        col.swap(scratch_);
+        array.swap(scratch_);
     }
 }
 
@@ -229,7 +229,7 @@ Foam::nodeBox Foam::particleArrays::stencilNodes
     {
         return nodeBox();
     }
-    const double* pos[3] = {column(X), column(Y), column(Z)};
+    const double* pos[3] = {component(X), component(Y), component(Z)};
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     const label n = size_;
     #pragma omp parallel for schedule(static) \
@@ -304,15 +304,15 @@ void Foam::particleArrays::stencilRows
 }
 
 
-bool Foam::particleArrays::finite(const std::vector<label>& columns) const
+bool Foam::particleArrays::finite(const std::vector<label>& components) const
 {
     // A count with no branch per value, which vectorises (every step, over
-    // every column): |v| <= max is false for infinities and NaN
+    // every component): |v| <= max is false for infinities and NaN
     const label n = size_;
     const double big = std::numeric_limits<double>::max();
-    for (const label c : columns)
+    for (const label c : components)
     {
-        const double* v = column(c);
+        const double* v = component(c);
         label nBad = 0;
         #pragma omp parallel for schedule(static) reduction(+:nBad)
         for (label i = 0; i < n; ++i)
@@ -357,9 +357,9 @@ bool Foam::particleArrays::sortByCell
 )
 {
     const label nCells = g.nCellsTotal();
-    const double* x = column(X);
-    const double* y = column(Y);
-    const double* z = column(Z);
+    const double* x = component(X);
+    const double* y = component(Y);
+    const double* z = component(Z);
 
     cell_.resize(size_);
     label* cellp = cell_.data();

@@ -110,9 +110,9 @@ bool Foam::particleCloudIO::writePositions
 
     const gridGeometry& g = grid_.geometry();
     const labelList& meshCell = grid_.meshCell();
-    const double* x = particles_.column(particleArrays::X);
-    const double* y = particles_.column(particleArrays::Y);
-    const double* z = particles_.column(particleArrays::Z);
+    const double* x = particles_.component(particleArrays::X);
+    const double* y = particles_.component(particleArrays::Y);
+    const double* z = particles_.component(particleArrays::Z);
 
     // As OpenFOAM's particle::writePosition: binary is the position and
     // the cell of its 1706 layout
@@ -160,10 +160,10 @@ bool Foam::particleCloudIO::writeTypedField
     );
     for (direction c = 0; c < pTraits<Type>::nComponents; ++c)
     {
-        const double* col = particles_.column(f.first + c);
+        const double* array = particles_.component(f.first + c);
         forAll(fld, i)
         {
-            setComponent(fld[i], c) = col[i];
+            setComponent(fld[i], c) = array[i];
         }
     }
 
@@ -215,10 +215,10 @@ void Foam::particleCloudIO::readTypedField
     }
     for (direction c = 0; c < pTraits<Type>::nComponents; ++c)
     {
-        double* col = particles.column(f.first + c);
+        double* array = particles.component(f.first + c);
         forAll(fld, i)
         {
-            col[i] = component(fld[i], c);
+            array[i] = component(fld[i], c);
         }
     }
 }
@@ -322,9 +322,9 @@ void Foam::particleCloudIO::read
     }
     particles.clear();
     particles.append(n);
-    double* x = particles.column(particleArrays::X);
-    double* y = particles.column(particleArrays::Y);
-    double* z = particles.column(particleArrays::Z);
+    double* x = particles.component(particleArrays::X);
+    double* y = particles.component(particleArrays::Y);
+    double* z = particles.component(particleArrays::Z);
     particle::positionsCompat1706 record;
     const std::size_t recordSize =
         offsetof(particle::positionsCompat1706, facei)
@@ -427,13 +427,13 @@ void Foam::particleCloudIO::checkRange
     {
         // A scalar by its value, a vector by its magnitude (by its largest
         // component when that is out of range: its square may overflow)
-        scalar v = particles.column(f.first)[i];
+        scalar v = particles.component(f.first)[i];
         if (nCmpt > 1)
         {
             scalar largest = 0;
             for (label c = 0; c < nCmpt; ++c)
             {
-                const double a = std::abs(particles.column(f.first + c)[i]);
+                const double a = std::abs(particles.component(f.first + c)[i]);
                 largest = a > largest || std::isnan(a) ? a : largest;
             }
             v = largest;
@@ -442,7 +442,7 @@ void Foam::particleCloudIO::checkRange
                 scalar sumSqr = 0;
                 for (label c = 0; c < nCmpt; ++c)
                 {
-                    const double r = particles.column(f.first + c)[i]/largest;
+                    const double r = particles.component(f.first + c)[i]/largest;
                     sumSqr += r*r;
                 }
                 v = largest*std::sqrt(sumSqr);
@@ -484,7 +484,7 @@ void Foam::particleCloudIO::checkCloud
         }
         for (label c = 0; c < particles.nComponents(f.kind); ++c)
         {
-            const double* v = particles.column(f.first + c);
+            const double* v = particles.component(f.first + c);
             for (label i = 0; i < particles.size(); ++i)
             {
                 if (!std::isfinite(v[i]))
@@ -501,9 +501,9 @@ void Foam::particleCloudIO::checkCloud
 
     // Inside the grid (a 2D grid: its x-y extent)
     const gridGeometry& g = grid.geometry();
-    const double* x = particles.column(particleArrays::X);
-    const double* y = particles.column(particleArrays::Y);
-    const double* z = particles.column(particleArrays::Z);
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* z = particles.component(particleArrays::Z);
     for (label i = 0; i < particles.size(); ++i)
     {
         if (!g.inside(x[i], y[i], z[i]))

@@ -86,10 +86,10 @@ double Foam::particleMemory::bytesPerParticle
     const particleArrays& particles
 )
 {
-    // A double per column, the sort's scratch column, the cell and the
+    // A double per component, the sort's scratch component, the cell and the
     // sort's order (labels), and the solvers' work arrays
     return
-        sizeof(double)*(particles.nColumns() + 1) + 2*sizeof(label)
+        sizeof(double)*(particles.nComponentArrays() + 1) + 2*sizeof(label)
       + workBytes;
 }
 
@@ -151,7 +151,7 @@ void Foam::particleMemory::reserve
         FatalErrorInFunction
             << n << " particles requested by " << setBy.c_str() << ": "
             << needed << " bytes needed (" << perParticle << " per particle: "
-            << particles.nColumns() << " columns of 8 bytes, sorting and work"
+            << particles.nComponentArrays() << " component arrays of 8 bytes, sorting and work"
             << " arrays), " << free << " bytes available (MemAvailable of"
             << " /proc/meminfo within ulimit -v and -d). Allowed: at most "
             << min(std::floor(free/perParticle), double(labelMax))

@@ -7,7 +7,7 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    mpm3DTransfers and mpm3DSmoothing, stage by stage against closed forms:
+    mpm3dTransfers and mpm3dSmoothing, stage by stage against closed forms:
     the affine momentum at every node of a stencil, P2G's conservation of
     mass and momentum, the internal force of a uniform stress (zero at the
     interior nodes, its first moment the total -V sigma), G2P of a linear
@@ -15,7 +15,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "mpm3DKernels.H"
+#include "mpm3dKernels.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -109,9 +109,9 @@ struct testParticles
         }
     }
 
-    mpm3DParticles view()
+    mpm3dParticles view()
     {
-        mpm3DParticles p;
+        mpm3dParticles p;
         p.n = gridIndex(m.size());
         for (int d = 0; d < 3; ++d)
         {
@@ -140,8 +140,8 @@ void p2g
 (
     const gridGeometry& g,
     testParticles& tp,
-    const mpm3DSettings& set,
-    mpm3DGrid& grid
+    const mpm3dSettings& set,
+    mpm3dGrid& grid
 )
 {
     grid.resize(g.nNodes());
@@ -169,7 +169,7 @@ void nodePosition(const gridGeometry& g, const gridIndex n, double xi[3])
 
 // The momentum stage alone: q0 + a A + b B + c C at node (a, b, c) of a
 // stencil is m v + m C (x_i - x_p), for jittered particles and random v, C
-TEST(mpm3DTransfers, AffineMomentumIsMomentumAboutEachNode)
+TEST(mpm3dTransfers, AffineMomentumIsMomentumAboutEachNode)
 {
     const gridGeometry g = box();
     std::mt19937 gen(3);
@@ -186,7 +186,7 @@ TEST(mpm3DTransfers, AffineMomentumIsMomentumAboutEachNode)
             tp.C[c][i] = u(gen);
         }
     }
-    const mpm3DParticles p = tp.view();
+    const mpm3dParticles p = tp.view();
     // Round-off of sums of a few terms of order 2 m/s
     constexpr double tol = 1e-13;
     double worst = 0;
@@ -231,7 +231,7 @@ TEST(mpm3DTransfers, AffineMomentumIsMomentumAboutEachNode)
 
 // P2G keeps mass and momentum to round-off: partition of unity, and the
 // affine part adds nothing in sum (sum_i N_i (x_i - x_p) = 0)
-TEST(mpm3DTransfers, P2GConservesMassAndMomentum)
+TEST(mpm3dTransfers, P2GConservesMassAndMomentum)
 {
     const gridGeometry g = box();
     std::mt19937 gen(5);
@@ -251,8 +251,8 @@ TEST(mpm3DTransfers, P2GConservesMassAndMomentum)
             tp.C[c][i] = u(gen);
         }
     }
-    mpm3DGrid grid;
-    p2g(g, tp, mpm3DSettings(), grid);
+    mpm3dGrid grid;
+    p2g(g, tp, mpm3dSettings(), grid);
 
     double mG = 0, momG[3] = {0, 0, 0};
     for (gridIndex n = 0; n < g.nNodes(); ++n)
@@ -278,7 +278,7 @@ TEST(mpm3DTransfers, P2GConservesMassAndMomentum)
 // zero over the grid, and its first moment is the block's total:
 // sum_i f_i,a x_i,b = -sigma_ab sum V (linear completeness). The force
 // sits on the block's surface: its traction.
-TEST(mpm3DTransfers, UniformStressPushesOnlyOnTheSurface)
+TEST(mpm3dTransfers, UniformStressPushesOnlyOnTheSurface)
 {
     const gridGeometry g = box();
     testParticles tp(g, 2, nullptr);
@@ -292,8 +292,8 @@ TEST(mpm3DTransfers, UniformStressPushesOnlyOnTheSurface)
         }
         Vtotal += tp.V[i];
     }
-    mpm3DGrid grid;
-    p2g(g, tp, mpm3DSettings(), grid);
+    mpm3dGrid grid;
+    p2g(g, tp, mpm3dSettings(), grid);
 
     // Force scale of one node: |sigma| times a cell face
     const double fScale = 5e4*g.dx[0]*g.dx[1];
@@ -354,7 +354,7 @@ TEST(mpm3DTransfers, UniformStressPushesOnlyOnTheSurface)
 
 // G2P of a linear node velocity v = v0 + B x gives v(x_p) and C = B at
 // every particle (linear completeness of the B-spline)
-TEST(mpm3DTransfers, G2PReproducesLinearVelocityField)
+TEST(mpm3dTransfers, G2PReproducesLinearVelocityField)
 {
     const gridGeometry g = box();
     std::mt19937 gen(9);
@@ -362,7 +362,7 @@ TEST(mpm3DTransfers, G2PReproducesLinearVelocityField)
     const double v0[3] = {0.5, -1, 2};
     const double B[3][3] = {{0.3, -0.2, 0.1}, {1.5, 0, -0.7}, {0.2, 0.4, -1}};
 
-    mpm3DGrid grid;
+    mpm3dGrid grid;
     grid.resize(g.nNodes());
     double* const v[3] = {grid.vx.data(), grid.vy.data(), grid.vz.data()};
     for (gridIndex n = 0; n < g.nNodes(); ++n)
@@ -376,8 +376,8 @@ TEST(mpm3DTransfers, G2PReproducesLinearVelocityField)
     }
     packVelocities3D(g, g.allNodes(), grid);
 
-    const mpm3DParticles p = tp.view();
-    const mpm3DSettings set;
+    const mpm3dParticles p = tp.view();
+    const mpm3dSettings set;
     // Round-off of sums of 27 terms of order 3 m/s (gradients: over dx)
     constexpr double tol = 1e-12;
     for (gridIndex i = 0; i < p.n; ++i)
@@ -410,16 +410,16 @@ TEST(mpm3DTransfers, G2PReproducesLinearVelocityField)
 
 // Smoothing: a body at rest (volume ratio r = 1) scatters (V r)_i = V_i
 // bit for bit, so that its J stays as it is
-TEST(mpm3DTransfers, VolumeChangeOfBodyAtRestIsNodeVolumeExactly)
+TEST(mpm3dTransfers, VolumeChangeOfBodyAtRestIsNodeVolumeExactly)
 {
     const gridGeometry g = box();
     std::mt19937 gen(13);
     testParticles tp(g, 2, &gen);
     std::fill(tp.div.begin(), tp.div.end(), 1.0);
-    mpm3DGrid grid;
+    mpm3dGrid grid;
     grid.resize(g.nNodes());
     const scatterSchedule schedule(g);
-    const mpm3DParticles p = tp.view();
+    const mpm3dParticles p = tp.view();
     pressureToGrid3D
     (
         g, schedule, kernel3(), g.allNodes(), tp.cellStart.data(), p, grid

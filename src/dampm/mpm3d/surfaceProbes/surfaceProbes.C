@@ -81,9 +81,9 @@ void Foam::surfaceProbes::write
 )
 {
     const label n = particles.size();
-    const double* x = particles.column(particleArrays::X);
-    const double* y = particles.column(particleArrays::Y);
-    const double* z = particles.column(particleArrays::Z);
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* z = particles.component(particleArrays::Z);
     const double rx = 0.5*geom_.dx[0];
     // Across a plane slice every particle is near
     const double ry = geom_.plane ? 1e300 : 0.5*geom_.dx[1];

@@ -68,11 +68,11 @@ void Foam::mpm3dFlow::planeFlow()
     // shear stresses across (xy, yz)
     double* const zeroed[] =
     {
-        particles_.column(particleArrays::UY),
-        particles_.column(gradU_ + 1), particles_.column(gradU_ + 3),
-        particles_.column(gradU_ + 4), particles_.column(gradU_ + 5),
-        particles_.column(gradU_ + 7),
-        particles_.column(sigma_ + 1), particles_.column(sigma_ + 4)
+        particles_.component(particleArrays::UY),
+        particles_.component(gradU_ + 1), particles_.component(gradU_ + 3),
+        particles_.component(gradU_ + 4), particles_.component(gradU_ + 5),
+        particles_.component(gradU_ + 7),
+        particles_.component(sigma_ + 1), particles_.component(sigma_ + 4)
     };
     for (double* c : zeroed)
     {
@@ -81,28 +81,28 @@ void Foam::mpm3dFlow::planeFlow()
 }
 
 
-Foam::mpm3DParticles Foam::mpm3dFlow::kernelView()
+Foam::mpm3dParticles Foam::mpm3dFlow::kernelView()
 {
     particleArrays& p = particles_;
-    mpm3DParticles v;
+    mpm3dParticles v;
     v.n = p.size();
     for (int d = 0; d < 3; ++d)
     {
-        v.x[d] = p.column(particleArrays::X + d);
-        v.u[d] = p.column(particleArrays::UX + d);
+        v.x[d] = p.component(particleArrays::X + d);
+        v.u[d] = p.component(particleArrays::UX + d);
     }
-    v.m = p.column(particleArrays::M);
-    v.V = p.column(particleArrays::VOL);
+    v.m = p.component(particleArrays::M);
+    v.V = p.component(particleArrays::VOL);
     for (int c = 0; c < 9; ++c)
     {
-        v.C[c] = p.column(gradU_ + c);
+        v.C[c] = p.component(gradU_ + c);
     }
     for (int c = 0; c < 6; ++c)
     {
-        v.sigma[c] = p.column(sigma_ + c);
+        v.sigma[c] = p.component(sigma_ + c);
     }
-    v.J = p.column(J_);
-    v.div = p.column(div_);
+    v.J = p.component(J_);
+    v.div = p.component(div_);
     if (settings_.smoothJ)
     {
         for (int d = 0; d < 3; ++d)
@@ -117,7 +117,7 @@ Foam::mpm3DParticles Foam::mpm3dFlow::kernelView()
 
 Foam::materialParticles Foam::mpm3dFlow::materialView()
 {
-    const mpm3DParticles k = kernelView();
+    const mpm3dParticles k = kernelView();
     materialParticles v;
     v.n = k.n;
     for (int c = 0; c < 9; ++c)
@@ -128,9 +128,9 @@ Foam::materialParticles Foam::mpm3dFlow::materialView()
     v.div = k.div;
     for (int c = 0; c < 6; ++c)
     {
-        v.sigma[c] = particles_.column(sigma_ + c);
+        v.sigma[c] = particles_.component(sigma_ + c);
     }
-    v.p = particles_.column(p_);
+    v.p = particles_.component(p_);
     return v;
 }
 
@@ -325,17 +325,17 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             const scalar J = material_->restJ(p);
             for (int d = 0; d < 3; ++d)
             {
-                particles_.column(particleArrays::X + d)[i] = pts[q][d];
-                particles_.column(particleArrays::UX + d)[i] = U[d];
+                particles_.component(particleArrays::X + d)[i] = pts[q][d];
+                particles_.component(particleArrays::UX + d)[i] = U[d];
             }
-            particles_.column(particleArrays::VOL)[i] = subVolume;
-            particles_.column(particleArrays::M)[i] = rho0*subVolume/J;
-            particles_.column(J_)[i] = J;
-            particles_.column(p_)[i] = p;
+            particles_.component(particleArrays::VOL)[i] = subVolume;
+            particles_.component(particleArrays::M)[i] = rho0*subVolume/J;
+            particles_.component(J_)[i] = J;
+            particles_.component(p_)[i] = p;
             // xx, yy, zz of the symmetric tensor
-            particles_.column(sigma_)[i] = -p;
-            particles_.column(sigma_ + 3)[i] = -p;
-            particles_.column(sigma_ + 5)[i] = -p;
+            particles_.component(sigma_)[i] = -p;
+            particles_.component(sigma_ + 3)[i] = -p;
+            particles_.component(sigma_ + 5)[i] = -p;
             mass += rho0*subVolume/J;
         }
 
@@ -406,9 +406,9 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
     double* x[3];
     for (int d = 0; d < 3; ++d)
     {
-        x[d] = particles_.column(particleArrays::X + d);
+        x[d] = particles_.component(particleArrays::X + d);
     }
-    const double* m = particles_.column(particleArrays::M);
+    const double* m = particles_.component(particleArrays::M);
     flagged_.assign(n, 0);
     label nOut = 0;
 
@@ -608,7 +608,7 @@ Foam::mpm3dFlow::mpm3dFlow
     planeFlow();
 
     scalar mMax = 0;
-    const double* m = particles_.column(particleArrays::M);
+    const double* m = particles_.component(particleArrays::M);
     for (label i = 0; i < particles_.size(); ++i)
     {
         mMax = max(mMax, m[i]);
@@ -766,7 +766,7 @@ void Foam::mpm3dFlow::particlesToGrid()
     activeNodes_.rows = &activeRows_;
     zeroNodes3D(g, activeNodes_, nodes_);
 
-    const mpm3DParticles view = kernelView();
+    const mpm3dParticles view = kernelView();
     visitKernel
     (
         [&](const auto& kernel)
@@ -810,7 +810,7 @@ Foam::scalar Foam::mpm3dFlow::stableDeltaT
     const double* u[3];
     for (int d = 0; d < 3; ++d)
     {
-        u[d] = particles_.column(particleArrays::UX + d);
+        u[d] = particles_.component(particleArrays::UX + d);
     }
     double maxU2 = 0;
     #pragma omp parallel for schedule(static) reduction(max:maxU2)
@@ -855,7 +855,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
 void Foam::mpm3dFlow::gridToParticles(const scalar dt)
 {
     const gridGeometry& g = grid_.geometry();
-    const mpm3DParticles view = kernelView();
+    const mpm3dParticles view = kernelView();
     const label n = particles_.size();
     const double* x0[3] = {nullptr, nullptr, nullptr};
     // The start positions, for the guard of the barriers the particles can
@@ -869,7 +869,7 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
     {
         for (int d = 0; d < 3; ++d)
         {
-            const double* x = particles_.column(particleArrays::X + d);
+            const double* x = particles_.component(particleArrays::X + d);
             xOld_[d].resize(n);
             double* xo = xOld_[d].data();
             #pragma omp parallel for schedule(static)
@@ -932,10 +932,10 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
     const double* u[3];
     for (int d = 0; d < 3; ++d)
     {
-        x[d] = particles_.column(particleArrays::X + d);
-        u[d] = particles_.column(particleArrays::UX + d);
+        x[d] = particles_.component(particleArrays::X + d);
+        u[d] = particles_.component(particleArrays::UX + d);
     }
-    const double* m = particles_.column(particleArrays::M);
+    const double* m = particles_.component(particleArrays::M);
     const double g[3] = {settings_.g[0], settings_.g[1], settings_.g[2]};
 
     // The same rounding on any number of threads
@@ -977,7 +977,7 @@ void Foam::mpm3dFlow::smoothPressure()
         return;
     }
     const gridGeometry& g = grid_.geometry();
-    const mpm3DParticles view = kernelView();
+    const mpm3dParticles view = kernelView();
     const nodeBox box = particles_.stencilNodes(g);
     visitKernel
     (
@@ -986,7 +986,7 @@ void Foam::mpm3dFlow::smoothPressure()
             nodalPressure3D
             (
                 g, kernel, box, settings_.wall, view,
-                particles_.column(p_), nodes_
+                particles_.component(p_), nodes_
             );
         }
     );
@@ -995,7 +995,7 @@ void Foam::mpm3dFlow::smoothPressure()
 
 bool Foam::mpm3dFlow::finite() const
 {
-    std::vector<label> all(particles_.nColumns());
+    std::vector<label> all(particles_.nComponentArrays());
     std::iota(all.begin(), all.end(), 0);
     return particles_.finite(all);
 }

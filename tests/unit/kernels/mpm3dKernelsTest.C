@@ -7,7 +7,7 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    mpm3DKernels: the node spans a step clears and updates hold every node
+    mpm3dKernels: the node spans a step clears and updates hold every node
     the wall folds write (wallFoldSpans), so that no node sum outlives its
     step. A block drifting two to four cells above the floor and beside the
     side walls, with a layer on the floor elsewhere, is the layout where
@@ -16,7 +16,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "mpm3DKernels.H"
+#include "mpm3dKernels.H"
 #include "particleArrays.H"
 #include "shapeKernels.H"
 #include "stencil.H"
@@ -52,9 +52,9 @@ std::array<double*, 3> positions(particleArrays& p)
 {
     return
     {
-        p.column(particleArrays::X),
-        p.column(particleArrays::Y),
-        p.column(particleArrays::Z)
+        p.component(particleArrays::X),
+        p.component(particleArrays::Y),
+        p.component(particleArrays::Z)
     };
 }
 
@@ -121,7 +121,7 @@ label splitTriples
 // The layout splits triples of the floor and side walls; widened, the
 // spans hold every triple whole or not at all, and still every stencil
 // node (they only grow)
-TEST(mpm3DKernels, WallFoldSpansHoldEveryFoldedTripleWhole)
+TEST(mpm3dKernels, WallFoldSpansHoldEveryFoldedTripleWhole)
 {
     const gridGeometry g = channel();
     std::mt19937 gen(7);
@@ -153,13 +153,13 @@ TEST(mpm3DKernels, WallFoldSpansHoldEveryFoldedTripleWhole)
 // of the block drifting, no node outside this step's spans holds mass
 // after the fold, and the mass the fold gives each mirror node is this
 // step's (the same as from a cleared grid): no sum outlives its step
-TEST(mpm3DKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
+TEST(mpm3dKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
 {
     const gridGeometry g = channel();
     std::mt19937 gen(11);
     std::uniform_real_distribution<double> u(-1, 1);
     particleArrays p = layerAndBlock(g, gen);
-    mpm3DGrid nodes, fresh;
+    mpm3dGrid nodes, fresh;
     nodes.resize(g.nNodes());
     nodeBox particleBox, active;
     nodeRowSpans rows, lastRows, activeRows;
@@ -201,7 +201,7 @@ TEST(mpm3DKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
         zeroNodes3D(g, active, nodes);
 
         fresh.resize(g.nNodes());
-        for (mpm3DGrid* grid : {&nodes, &fresh})
+        for (mpm3dGrid* grid : {&nodes, &fresh})
         {
             double* mass = grid->mass.data();
             const std::array<double*, 3> x = positions(p);
