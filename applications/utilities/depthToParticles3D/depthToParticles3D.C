@@ -127,7 +127,10 @@ int main(int argc, char *argv[])
     particleArrays particles3D(flow3D.particles());
     std::vector<char> converted;
     const columnsTo3D::totals totals =
-        conversion.convert(columns.runOut(), particles3D, &converted);
+        conversion.convert
+        (
+            columns.runOut(), particles3D, flow3D.stress(), &converted
+        );
 
     #include "checkConversion.H"
 

@@ -82,6 +82,13 @@ particleArrays fields3D()
     return p;
 }
 
+// Where fields3D keeps the stress state
+mpm3dFlow::stressFields stress3D()
+{
+    const particleArrays p = fields3D();
+    return {p.field("sigma").first, p.field("p").first, p.field("J").first};
+}
+
 // Random columns with dampmFoam's fields; centres in [x0, x1] x [y0, y1]
 depthAveragedParticles randomColumns
 (
@@ -157,7 +164,8 @@ TEST(columnsTo3D, ConservesOnRandomColumnsOverSlopingGround)
     );
     const depthAveragedParticles columns = randomColumns(3000, 1, 19, 1, 9, 7);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
+    const columnsTo3D::totals t =
+        conversion.convert(columns.runOut(), p, stress3D());
 
     EXPECT_EQ(t.columns, 3000);
     EXPECT_EQ(t.unconvertedColumns, 0);
@@ -196,14 +204,14 @@ TEST(columnsTo3D, ParticlesInsideTheirColumnOnTheGroundHydrostatic)
     const depthAveragedParticles columns = randomColumns(300, 1, 19, 1, 9, 11);
     const label A = columns.f.A();
     const label F = columns.f.F();
-    const label sigma = fields3D().field("sigma").first;
-    const label pF = fields3D().field("p").first;
-    const label JF = fields3D().field("J").first;
+    const label sigma = stress3D().sigma;
+    const label pF = stress3D().p;
+    const label JF = stress3D().J;
 
     for (label c = 0; c < columns.p.size(); ++c)
     {
         particleArrays p = fields3D();
-        conversion.convert(oneColumn(columns, c).runOut(), p);
+        conversion.convert(oneColumn(columns, c).runOut(), p, stress3D());
         ASSERT_GT(p.size(), 0);
 
         // The footprint F scaled to the area A
@@ -277,7 +285,8 @@ TEST(columnsTo3D, BedVerticalVelocityFollowsTheGroundOnly)
     );
     const depthAveragedParticles columns = randomColumns(50, 1, 19, 1, 9, 19);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
+    const columnsTo3D::totals t =
+        conversion.convert(columns.runOut(), p, stress3D());
     for (label i = 0; i < p.size(); ++i)
     {
         const double x = p.component(particleArrays::X)[i];
@@ -303,7 +312,8 @@ TEST(columnsTo3D, BagnoldProfileKeepsTheDepthAverage)
     );
     const depthAveragedParticles columns = randomColumns(500, 1, 19, 1, 9, 13);
     particleArrays p = fields3D();
-    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p);
+    const columnsTo3D::totals t =
+        conversion.convert(columns.runOut(), p, stress3D());
 
     const double pScale = std::abs(t.momentumDA[0]) + std::abs(t.momentumDA[1]);
     EXPECT_LT(std::abs(t.momentum3D[0] - t.momentumDA[0]), roundOff*pScale);
@@ -336,7 +346,8 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     }
     particleArrays p = fields3D();
     std::vector<char> converted;
-    const columnsTo3D::totals t = conversion.convert(columns.runOut(), p, &converted);
+    const columnsTo3D::totals t =
+        conversion.convert(columns.runOut(), p, stress3D(), &converted);
 
     ASSERT_GT(nOutside, 0);
     EXPECT_EQ(t.unconvertedColumns, nOutside);
@@ -365,7 +376,8 @@ TEST(columnsTo3D, CountsColumnsOutsideAndKeepsSideParticlesInside)
     tall.p.component(particleArrays::X)[0] = 10;
     tall.p.component(particleArrays::VOL)[0] *= 1e4;
     particleArrays q = fields3D();
-    const columnsTo3D::totals tt = conversion.convert(tall.runOut(), q);
+    const columnsTo3D::totals tt =
+        conversion.convert(tall.runOut(), q, stress3D());
     EXPECT_EQ(tt.columns, 0);
     EXPECT_EQ(tt.columnsAbove, 1);
     EXPECT_EQ(q.size(), 0);

@@ -125,6 +125,7 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
 (
     const runOutFields& columns,
     particleArrays& particles3D,
+    const mpm3dFlow::stressFields& stress3D,
     std::vector<char>* inRegion
 ) const
 {
@@ -237,9 +238,9 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
     );
 
     // Pass 2: the particles
-    const label sigma = particles3D.field("sigma").first;
-    const label pField = particles3D.field("p").first;
-    const label JField = particles3D.field("J").first;
+    const label sigma = stress3D.sigma;
+    const label pField = stress3D.p;
+    const label JField = stress3D.J;
     const scalar rho0 = material_.rho();
 
     std::vector<scalar> f;
