@@ -14,7 +14,9 @@ Description
     its areas' volumes, also when the lattice outside is coarsened; an
     expression's NaN or inf is refused naming the column (not clamped to
     zero); a release wholly outside the mesh, or with nothing inside it, is
-    refused naming both extents.
+    refused naming both extents. A polygon (non-convex, either
+    orientation) releases its area times the thickness exactly, or fills
+    to its surface level over a sloping bed.
 
 \*---------------------------------------------------------------------------*/
 
@@ -59,10 +61,17 @@ class testRelease
 
 public:
 
-    explicit testRelease(const std::string& text)
+    //- On the bed of topographyDict (flat when empty)
+    explicit testRelease
+    (
+        const std::string& text,
+        const dictionary& topographyDict = dictionary()
+    )
     {
-        dictionary none;
-        flat_ = topographyModel::New(none, fileName(DAMPM_TEST_MESHES));
+        flat_ = topographyModel::New
+        (
+            topographyDict, fileName(DAMPM_TEST_MESHES)
+        );
         IStringStream is(text);
         dictionary dict(is);
         dict.name() = "constant/dampmProperties.release";
@@ -77,11 +86,19 @@ public:
 
 
 //- Volume of the sampled columns [m^3]
-scalar keptVolume(const std::string& text, label& nColumns)
+scalar keptVolume
+(
+    const std::string& text,
+    label& nColumns,
+    const dictionary& topographyDict = dictionary()
+)
 {
     const gridGeometry g(grid());
     std::vector<double> x, y, h;
-    testRelease(text)().sampleColumns(g, nPerCell, rho, x, y, h);
+    testRelease(text, topographyDict)().sampleColumns
+    (
+        g, nPerCell, rho, x, y, h
+    );
     nColumns = label(h.size());
     return std::accumulate(h.begin(), h.end(), 0.0)/(nPerCell*nPerCell);
 }
@@ -227,6 +244,48 @@ TEST(releaseModel, ReleaseOutsideTheMeshIsRefusedNamingBothExtents)
         " at all 40 x 40 columns"), std::string::npos) << nothing;
     EXPECT_NE(nothing.find("allowed: a release with thickness h > 0 somewhere"
         " inside the mesh"), std::string::npos) << nothing;
+}
+
+
+
+TEST(polygonRelease, NonConvexPolygonReleasesItsAreaTimesItsDepth)
+{
+    const solverFpTraps traps;
+    // An L of 10 x 4 and 4 x 6 m, vertices on cell lines: 64 m^2, 256
+    // columns whose centres are all clear of its edges
+    const std::string L = "((2 2) (12 2) (12 6) (6 6) (6 12) (2 12))";
+    const std::string reversed = "((2 12) (6 12) (6 6) (12 6) (12 2) (2 2))";
+    for (const std::string& vertices : {L, reversed})
+    {
+        label nColumns;
+        EXPECT_EQ
+        (
+            keptVolume
+            (
+                "type polygon; vertices " + vertices + "; thickness 1.5;",
+                nColumns
+            ),
+            1.5*64
+        );
+        EXPECT_EQ(nColumns, 64*nPerCell*nPerCell);
+    }
+
+    // Filled to 2 m over Z = 0.1 x: V = 2 A - 0.1 int x dA, with
+    // int x dA = 40*7 + 24*4 (each column's midpoint value is exact for a
+    // depth linear in x)
+    dictionary coeffs;
+    coeffs.add("Z", string("0.1*x"));
+    dictionary sloping;
+    sloping.name() = "constant/dampmProperties";
+    sloping.add("topography", word("expression"));
+    sloping.add("expressionCoeffs", coeffs);
+    label nColumns;
+    const scalar V = keptVolume
+    (
+        "type polygon; vertices " + L + "; surfaceLevel 2;", nColumns, sloping
+    );
+    EXPECT_NEAR(V, 2.0*64 - 0.1*(40*7 + 24*4), 1e-12*V);
+    EXPECT_EQ(nColumns, 64*nPerCell*nPerCell);
 }
 
 
