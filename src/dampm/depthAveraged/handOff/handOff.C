@@ -44,8 +44,13 @@ void Foam::handOff::readRegion
             continue;
         }
         // The shape alone; a barrier's other keywords (contact, ...) may
-        // come with it and do not matter here
+        // come with it and do not matter here, but a contact the 3D stage
+        // refuses is refused now, not after the whole run-out
         knownKeywords::add(e.dict(), barrier::keywords());
+        if (e.dict().found("contact"))
+        {
+            const contactCondition checked(e.dict());
+        }
         region_.append(barrierGeometry::New(e.keyword(), e.dict(), caseDir));
     }
     if (region_.empty())
