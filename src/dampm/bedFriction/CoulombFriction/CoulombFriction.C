@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "CoulombFriction.H"
+#include "boundedScalar.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
@@ -38,12 +39,7 @@ Foam::bedFrictionModels::CoulombFriction::CoulombFriction
 {
     knownKeywords::add(coeffs, {"pA"});
 
-    if (!(pA_ >= 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "pA = " << pA_ << " is invalid; allowed: pA >= 0 [Pa]"
-            << exit(FatalIOError);
-    }
+    boundedScalar(coeffs, "pA", pA_, scalarBound::nonNegative, "[Pa]");
 }
 
 

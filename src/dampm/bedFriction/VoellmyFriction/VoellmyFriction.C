@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "VoellmyFriction.H"
+#include "boundedScalar.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -36,12 +37,7 @@ Foam::bedFrictionModels::VoellmyFriction::VoellmyFriction
 {
     knownKeywords::add(coeffs, {"xi"});
 
-    if (!(xi_ > 0))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "xi = " << xi_ << " is invalid; allowed: xi > 0 [m/s^2]"
-            << exit(FatalIOError);
-    }
+    boundedScalar(coeffs, "xi", xi_, scalarBound::positive, "[m/s^2]");
 }
 
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "depthAveragedFlow.H"
+#include "boundedScalar.H"
 #include "depthAveragedSeeding.H"
 #include "knownKeywords.H"
 #include "staticSwitches.H"
@@ -175,12 +176,7 @@ void Foam::depthAveragedFlow::checkInput(const dictionary& dict) const
             << "particlesPerCell = " << nPerCell_ << " is invalid; allowed:"
             << " 1 to 8 (per cell and axis)" << exit(FatalIOError);
     }
-    if (!(hMin_ >= 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "hMin = " << hMin_ << " is invalid; allowed: hMin >= 0 [m]"
-            << exit(FatalIOError);
-    }
+    boundedScalar(dict, "hMin", hMin_, scalarBound::nonNegative, "[m]");
 }
 
 

@@ -10,6 +10,7 @@ License
 
 #include "rheologyModel.H"
 #include "knownKeywords.H"
+#include "boundedScalar.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,14 +26,10 @@ namespace Foam
 Foam::scalar Foam::rheologyModel::readNonNegative(const word& key) const
 {
     knownKeywords::add(coeffs_, {key});
-    const scalar value = coeffs_.get<scalar>(key);
-    if (!(value >= 0))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << key << " = " << value << " is invalid; allowed: " << key
-            << " >= 0" << exit(FatalIOError);
-    }
-    return value;
+    return boundedScalar
+    (
+        coeffs_, key, coeffs_.get<scalar>(key), scalarBound::nonNegative
+    );
 }
 
 

@@ -10,6 +10,7 @@ License
 
 #include "yieldViscosity.H"
 #include "knownKeywords.H"
+#include "boundedScalar.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -31,14 +32,11 @@ double Foam::yieldViscosity::readCoeff
 )
 {
     knownKeywords::add(dict, {key});
-    const scalar value = dict.get<scalar>(key);
-    if (positive ? !(value > 0) : !(value >= 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " = " << value << " is invalid; allowed: " << key
-            << (positive ? " > 0" : " >= 0") << exit(FatalIOError);
-    }
-    return value;
+    return boundedScalar
+    (
+        dict, key, dict.get<scalar>(key),
+        positive ? scalarBound::positive : scalarBound::nonNegative
+    );
 }
 
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureInput.H"
+#include "boundedScalar.H"
 #include "FlatOutput.H"
 #include <cmath>
 
@@ -21,14 +22,10 @@ Foam::scalar Foam::structureInput::positive
     const char* units
 )
 {
-    const scalar value = dict.get<scalar>(keyword);
-    if (!(value > 0 && std::isfinite(value)))
-    {
-        FatalIOErrorInFunction(dict)
-            << keyword << " = " << value << " is invalid; allowed: "
-            << keyword << " > 0 " << units << exit(FatalIOError);
-    }
-    return value;
+    return boundedScalar
+    (
+        dict, keyword, dict.get<scalar>(keyword), scalarBound::positive, units
+    );
 }
 
 
@@ -40,14 +37,11 @@ Foam::scalar Foam::structureInput::nonNegative
     const char* units
 )
 {
-    const scalar value = dict.getOrDefault<scalar>(keyword, deflt);
-    if (!(value >= 0 && std::isfinite(value)))
-    {
-        FatalIOErrorInFunction(dict)
-            << keyword << " = " << value << " is invalid; allowed: "
-            << keyword << " >= 0 " << units << exit(FatalIOError);
-    }
-    return value;
+    return boundedScalar
+    (
+        dict, keyword, dict.getOrDefault<scalar>(keyword, deflt),
+        scalarBound::nonNegative, units
+    );
 }
 
 
