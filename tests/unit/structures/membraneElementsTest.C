@@ -11,8 +11,8 @@ Description
     under uniform pressure (static, by dynamic relaxation: Underwood, 1983,
     in Computational Methods for Transient Analysis, North-Holland,
     245-265), the energy and the period of the free vibration of a
-    prestressed square membrane, and momentum conservation of a free
-    membrane.
+    prestressed square membrane, momentum conservation of a free
+    membrane, and the Cauchy stress of homogeneous deformations.
 
     Hencky's problem (Hencky, 1915, Z. Math. Phys. 63, 311-317; corrected
     by Chien, 1948, Sci. Rep. Natl. Tsinghua Univ. A5, 71-94; Fichter,
@@ -28,6 +28,7 @@ Description
 
 #include "structureTestTools.H"
 #include "Random.H"
+#include "transform.H"
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -127,6 +128,57 @@ double henckyDeflection(const label nRings, const double q)
     }
     relax(s, 1e-12, 10);
     return s.nodes().z[0];
+}
+
+
+//- A free 1 m x 0.5 m panel (8 x 4 cells) turned by R from the x-y
+//  plane, its nodes moved to x = A X
+flexibleStructure deformedPanel
+(
+    const tensor& R,
+    const tensor& A,
+    const std::string& prestress
+)
+{
+    const membraneMesh flat
+    (
+        dictionaryOf
+        (
+            "type panel; corners ((0 0 0) (1 0 0) (1 0.5 0) (0 0.5 0));"
+            "resolution (8 4);"
+        ),
+        "."
+    );
+    pointField X(flat.points().size());
+    forAll(X, pointi)
+    {
+        X[pointi] = R & flat.points()[pointi];
+    }
+    flexibleStructure s
+    (
+        dictionaryOf
+        (
+            "type membrane; thickness 0.002; E 1e9; nu 0.3; rho 1000;"
+            "prestress " + prestress + ";"
+        ),
+        membraneMesh(X, flat.triangles())
+    );
+    structureNodes& n = s.nodes();
+    for (label nodei = 0; nodei < n.size(); ++nodei)
+    {
+        const point x = A & n.referencePosition(nodei);
+        n.x[nodei] = x.x();
+        n.y[nodei] = x.y();
+        n.z[nodei] = x.z();
+    }
+    return s;
+}
+
+
+//- The largest component of a - b
+scalar maxDifference(const symmTensor& a, const symmTensor& b)
+{
+    return cmptMax(cmptMag(a - b));
 }
 
 } // End anonymous namespace
@@ -295,4 +347,63 @@ TEST(membraneElements, FreeMembraneConservesMomentum)
     }
     EXPECT_GT(s.maxDeflection(), 0.01);    // it moved and deformed
     EXPECT_LT(mag(s.momentum() - p0), 1e-12*scale);
+}
+
+
+TEST(membraneElements, UniaxialStretchGivesYoungsModulusTimesStrain)
+{
+    // Stretch eps along x, the free sides contracted so that S22 = 0
+    // (E22 = -nu E11): sigma_xx = E E11 lambda1/(lambda2 lambda3) =
+    // E eps (1 + O(eps)), the rest 0
+    const scalar E = 1e9, nu = 0.3, eps = 1e-4;
+    const scalar E11 = eps + 0.5*eps*eps;
+    const scalar lambda2 = std::sqrt(1 - 2*nu*E11);
+    const flexibleStructure s = deformedPanel
+    (
+        I,
+        tensor(1 + eps, 0, 0, 0, lambda2, 0, 0, 0, 1),
+        "0"
+    );
+    const symmTensorField sigma(s.membrane().cauchyStress(s.nodes()));
+    ASSERT_EQ(sigma.size(), 64);
+    for (const symmTensor& st : sigma)
+    {
+        EXPECT_NEAR(st.xx(), E*eps, 3*eps*E*eps);
+        // The rest vanishes to round-off
+        const symmTensor uniaxial(st.xx(), 0, 0, 0, 0, 0);
+        EXPECT_LT(maxDifference(st, uniaxial), 1e-8*E*eps);
+    }
+}
+
+
+TEST(membraneElements, EquibiaxialStretchInATiltedPlane)
+{
+    // Stretch eps in the plane of a panel turned out of every axis:
+    // sigma = E eps/(1 - nu) (I - n n) in global axes, to O(eps)
+    const scalar E = 1e9, nu = 0.3, eps = 1e-4;
+    const tensor R = Ra(vector(1, 2, 3)/mag(vector(1, 2, 3)), 0.7);
+    const vector normal = R & vector(0, 0, 1);
+    const tensor A = I + eps*(I - sqr(normal));
+    const flexibleStructure s = deformedPanel(R, A, "0");
+    const symmTensor expected = E*eps/(1 - nu)*(symmTensor(I) - sqr(normal));
+    ASSERT_GT(mag(expected.xy()), 0.1*E*eps);   // not in principal axes
+    for (const symmTensor& st : s.membrane().cauchyStress(s.nodes()))
+    {
+        EXPECT_LT(maxDifference(st, expected), 3*eps*E*eps/(1 - nu));
+    }
+}
+
+
+TEST(membraneElements, PrestressTurnsWithTheMembrane)
+{
+    // A rigid rotation Q of a prestressed panel strains nothing: sigma is
+    // the prestress in the turned plane, S0 (I - n n), n = Q z
+    const tensor Q = Ra(vector(0, 1, 0), 1.2) & Ra(vector(1, 0, 0), 0.4);
+    const flexibleStructure s = deformedPanel(I, Q, "2e5");
+    const vector normal = Q & vector(0, 0, 1);
+    const symmTensor expected = 2e5*(symmTensor(I) - sqr(normal));
+    for (const symmTensor& st : s.membrane().cauchyStress(s.nodes()))
+    {
+        EXPECT_LT(maxDifference(st, expected), 1e-9*2e5);
+    }
 }

@@ -15,6 +15,51 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+inline void Foam::membraneElements::deformationGradient
+(
+    const label* n,
+    const double* g,
+    const double* x,
+    const double* y,
+    const double* z,
+    double a[3],
+    double b[3]
+)
+{
+    for (label c = 0; c < 3; ++c)
+    {
+        a[c] = b[c] = 0;
+    }
+    for (label i = 0; i < 3; ++i)
+    {
+        const double p[3] = {x[n[i]], y[n[i]], z[n[i]]};
+        for (label c = 0; c < 3; ++c)
+        {
+            a[c] += p[c]*g[2*i];
+            b[c] += p[c]*g[2*i + 1];
+        }
+    }
+}
+
+
+inline void Foam::membraneElements::planeStress
+(
+    const double D,
+    const double nu,
+    const double E11,
+    const double E22,
+    const double E12,
+    double& S11,
+    double& S22,
+    double& S12
+)
+{
+    S11 = D*(E11 + nu*E22);
+    S22 = D*(E22 + nu*E11);
+    S12 = D*(1 - nu)*E12;
+}
+
+
 void Foam::membraneElements::readMaterial(const dictionary& dict)
 {
     h_ = structureInput::positive(dict, "thickness", "[m]");
@@ -152,20 +197,9 @@ double Foam::membraneElements::addInternalForces
         const double* g = &grad[6*trii];
 
         // Columns a, b of F and ad, bd of dF/dt
-        double a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
-        double ad[3] = {0, 0, 0}, bd[3] = {0, 0, 0};
-        for (label i = 0; i < 3; ++i)
-        {
-            const double p[3] = {x[n[i]], y[n[i]], z[n[i]]};
-            const double v[3] = {vx[n[i]], vy[n[i]], vz[n[i]]};
-            for (label c = 0; c < 3; ++c)
-            {
-                a[c] += p[c]*g[2*i];
-                b[c] += p[c]*g[2*i + 1];
-                ad[c] += v[c]*g[2*i];
-                bd[c] += v[c]*g[2*i + 1];
-            }
-        }
+        double a[3], b[3], ad[3], bd[3];
+        deformationGradient(n, g, x, y, z, a, b);
+        deformationGradient(n, g, vx, vy, vz, ad, bd);
         const double aa = a[0]*a[0] + a[1]*a[1] + a[2]*a[2];
         const double bb = b[0]*b[0] + b[1]*b[1] + b[2]*b[2];
         const double ab = a[0]*b[0] + a[1]*b[1] + a[2]*b[2];
@@ -182,12 +216,9 @@ double Foam::membraneElements::addInternalForces
             );
 
         // Elastic and viscous 2nd Piola-Kirchhoff stresses (plane stress)
-        const double Se11 = D*(E11 + nu*E22);
-        const double Se22 = D*(E22 + nu*E11);
-        const double Se12 = D*(1 - nu)*E12;
-        const double Sv11 = beta*D*(Ed11 + nu*Ed22);
-        const double Sv22 = beta*D*(Ed22 + nu*Ed11);
-        const double Sv12 = beta*D*(1 - nu)*Ed12;
+        double Se11, Se22, Se12, Sv11, Sv22, Sv12;
+        planeStress(D, nu, E11, E22, E12, Se11, Se22, Se12);
+        planeStress(beta*D, nu, Ed11, Ed22, Ed12, Sv11, Sv22, Sv12);
         const double S11 = S0 + Se11 + Sv11;
         const double S22 = S0 + Se22 + Sv22;
         const double S12 = Se12 + Sv12;
@@ -250,6 +281,41 @@ std::vector<double> Foam::membraneElements::nodeAreas
         }
     }
     return area;
+}
+
+
+Foam::symmTensorField Foam::membraneElements::cauchyStress
+(
+    const structureNodes& nodes
+) const
+{
+    const double D = E_/(1 - nu_*nu_);
+    symmTensorField sigma(size());
+    forAll(sigma, trii)
+    {
+        double a[3], b[3];
+        deformationGradient
+        (
+            &node_[3*trii], &grad_[6*trii],
+            nodes.x.data(), nodes.y.data(), nodes.z.data(), a, b
+        );
+        const vector va(a[0], a[1], a[2]);
+        const vector vb(b[0], b[1], b[2]);
+        const scalar E11 = 0.5*(magSqr(va) - 1);
+        const scalar E22 = 0.5*(magSqr(vb) - 1);
+        const scalar E12 = 0.5*(va & vb);
+        double S11, S22, S12;
+        planeStress(D, nu_, E11, E22, E12, S11, S22, S12);
+
+        const scalar lambda3Sqr = 1 - 2*nu_/(1 - nu_)*(E11 + E22);
+        const scalar J = mag(va ^ vb)*std::sqrt(max(lambda3Sqr, 0.01));
+        sigma[trii] =
+        (
+            (S0_ + S11)*sqr(va) + (S0_ + S22)*sqr(vb)
+          + S12*twoSymm(va*vb)
+        )/J;
+    }
+    return sigma;
 }
 
 
