@@ -30,26 +30,6 @@ using namespace Foam::structureTest;
 namespace
 {
 
-//- A panel barrier in the x-z plane: the sides anchored, the top corners
-//  held by retaining ropes with brakes, upstream (-y)
-const std::string ropes =
-    "ropes {"
-    "    retainingLeft { from (0 0 2); to (-1 -1 3); EA 1e7; linearDensity 5;"
-    "        pretension 100; segments 4;"
-    "        brake { threshold 1e3; maxElongation 0.5; } }"
-    "    retainingRight { from (4 0 2); to (5 -1 3); EA 1e7; linearDensity 5;"
-    "        pretension 100; segments 4;"
-    "        brake { threshold 1e3; maxElongation 0.5; } } }";
-
-const std::string barrier =
-    "type membrane;"
-    "geometry { type panel; corners ((0 0 0) (4 0 0) (4 0 2) (0 0 2));"
-    "    resolution (16 8); }"
-    "thickness 0.002; E 2e9; nu 0.3; rho 1000; prestress 1e5;"
-    "anchors { left { type box; min (-0.01 -1 -0.01); max (0.01 1 1.99); }"
-    "    right { type box; min (3.99 -1 -0.01); max (4.01 1 1.99); } }";
-
-
 //- The FatalIOError message building a structure from text ("" if none)
 std::string inputError(const std::string& text)
 {
@@ -70,11 +50,7 @@ std::string inputError(const std::string& text)
 flexibleStructure loadedBarrier(const std::string& damping, const scalar t)
 {
     flexibleStructure s(dictionaryOf(barrier + ropes + damping), ".");
-    const std::vector<double> area = s.membrane().nodeAreas(s.nodes().size());
-    for (label nodei = 0; nodei < s.nodes().size(); ++nodei)
-    {
-        s.nodes().fExtY[nodei] = 2e3*area[nodei];
-    }
+    loadBarrier(s);
     const scalar dtFlow = 1e-3;
     while (s.time() < t - 0.5*dtFlow)
     {

@@ -10,10 +10,37 @@ License
 
 #include "flexibleStructure.H"
 #include "structureInput.H"
+#include "exactPrecision.H"
 #include "Enum.H"
 #include "FlatOutput.H"
 #include <algorithm>
 #include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The energies in the restart state, by keyword
+const std::pair<const char*, double Foam::flexibleStructure::energyBudget::*>
+    energyKeywords[] =
+{
+    {"kinetic", &Foam::flexibleStructure::energyBudget::kinetic},
+    {"membraneStrain", &Foam::flexibleStructure::energyBudget::membraneStrain},
+    {"ropeStrain", &Foam::flexibleStructure::energyBudget::ropeStrain},
+    {
+        "dampingDissipation",
+        &Foam::flexibleStructure::energyBudget::dampingDissipation
+    },
+    {
+        "brakeDissipation",
+        &Foam::flexibleStructure::energyBudget::brakeDissipation
+    },
+    {"externalWork", &Foam::flexibleStructure::energyBudget::externalWork}
+};
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -293,6 +320,37 @@ Foam::vector Foam::flexibleStructure::momentum() const
         }
     }
     return sum;
+}
+
+
+void Foam::flexibleStructure::writeState(dictionary& state) const
+{
+    // An entry keeps its value as printed when it is set
+    const exactPrecision exact;
+    state.set("time", time_);
+    nodes_.writeState(state);
+    ropes_.writeState(state);
+
+    dictionary energies;
+    for (const auto& keyed : energyKeywords)
+    {
+        energies.set(keyed.first, energy_.*keyed.second);
+    }
+    state.set("energies", energies);
+}
+
+
+void Foam::flexibleStructure::readState(const dictionary& state)
+{
+    time_ = state.get<scalar>("time");
+    nodes_.readState(state);
+    ropes_.readState(state);
+
+    const dictionary& energies = state.subDict("energies");
+    for (const auto& keyed : energyKeywords)
+    {
+        energy_.*keyed.second = energies.get<scalar>(keyed.first);
+    }
 }
 
 

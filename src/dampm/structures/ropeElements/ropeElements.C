@@ -10,6 +10,8 @@ License
 
 #include "ropeElements.H"
 #include "structureInput.H"
+#include "exactPrecision.H"
+#include "scalarList.H"
 #include <algorithm>
 #include <cmath>
 
@@ -115,6 +117,22 @@ void Foam::ropeElements::readRope
         prev = next;
     }
     ropeStart_.push_back(size());
+}
+
+
+void Foam::ropeElements::readSegmentValues
+(
+    const dictionary& state,
+    const word& keyword,
+    std::vector<double>& values
+) const
+{
+    const scalarList read(state.get<scalarList>(keyword));
+    structureInput::checkSize
+    (
+        state, keyword, read.size(), size(), "one per rope segment"
+    );
+    std::copy(read.begin(), read.end(), values.begin());
 }
 
 
@@ -253,6 +271,28 @@ Foam::label Foam::ropeElements::ropeOf(const label segi) const
         std::upper_bound(ropeStart_.begin(), ropeStart_.end(), segi)
       - ropeStart_.begin()
     ) - 1;
+}
+
+
+void Foam::ropeElements::writeState(dictionary& state) const
+{
+    // An entry keeps its value as printed when it is set
+    const exactPrecision exact;
+    state.set
+    (
+        "plasticElongation",
+        scalarList(plastic_.begin(), plastic_.end())
+    );
+    state.set("tension", scalarList(tension_.begin(), tension_.end()));
+    state.set("brakeDissipation", brakeDissipation_);
+}
+
+
+void Foam::ropeElements::readState(const dictionary& state)
+{
+    readSegmentValues(state, "plasticElongation", plastic_);
+    readSegmentValues(state, "tension", tension_);
+    brakeDissipation_ = state.get<scalar>("brakeDissipation");
 }
 
 

@@ -64,4 +64,24 @@ void Foam::structureInput::onlyKeywords
 }
 
 
+void Foam::structureInput::checkSize
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label size,
+    const label expected,
+    const char* what
+)
+{
+    if (size != expected)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << keyword << " of " << dict.name() << " has "
+            << size << " values; expected " << expected << ", " << what
+            << " of the structure built from its dictionary"
+            << exit(FatalIOError);
+    }
+}
+
+
 // ************************************************************************* //
