@@ -88,22 +88,7 @@ void Foam::nodeContact::finishSearch
     share_.assign(nodes_.size(), 1.0);
     forAll(nodes_, c)
     {
-        gridGeometry::index ijk[3];
-        g.nodeIJK(nodes_[c], ijk);
-        for (int d = 0; d < g.dim; ++d)
-        {
-            const gridGeometry::index side[2] = {0, g.nCells[d]};
-            for (int s = 0; s < 2; ++s)
-            {
-                if (!wall[d][s])
-                {
-                    continue;
-                }
-                const gridGeometry::index beyond =
-                    s ? ijk[d] - side[s] : side[s] - ijk[d];
-                share_[c] *= beyond > 0 ? 0 : (beyond == 0 ? 0.5 : 1);
-            }
-        }
+        share_[c] = domainShare(g, wall, nodes_[c]);
     }
 
     if (nodes_.empty())
@@ -117,6 +102,34 @@ void Foam::nodeContact::finishSearch
     }
     warnIfThin(g);
     depth_.clear();
+}
+
+
+double Foam::nodeContact::domainShare
+(
+    const gridGeometry& g,
+    const bool wall[3][2],
+    const gridGeometry::index node
+)
+{
+    gridGeometry::index ijk[3];
+    g.nodeIJK(node, ijk);
+    double share = 1;
+    for (int d = 0; d < g.dim; ++d)
+    {
+        const gridGeometry::index side[2] = {0, g.nCells[d]};
+        for (int s = 0; s < 2; ++s)
+        {
+            if (!wall[d][s])
+            {
+                continue;
+            }
+            const gridGeometry::index beyond =
+                s ? ijk[d] - side[s] : side[s] - ijk[d];
+            share *= beyond > 0 ? 0 : (beyond == 0 ? 0.5 : 1);
+        }
+    }
+    return share;
 }
 
 

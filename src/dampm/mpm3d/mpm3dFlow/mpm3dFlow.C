@@ -560,6 +560,23 @@ Foam::mpm3dFlow::mpm3dFlow
                 << " allowed: name { type plane|box|triSurface|terrain; ... }"
                 << exit(FatalIOError);
         }
+        if (membraneBarrier::isMembrane(e.dict()))
+        {
+            if (grid.isPlane())
+            {
+                FatalIOErrorInFunction(e.dict())
+                    << "barrier " << e.keyword() << " is a membrane, which"
+                    << " needs a 3D mesh; this one is a plane slice (one"
+                    << " cell across y with empty patches); allowed on a"
+                    << " plane slice: plane, box, triSurface, terrain"
+                    << exit(FatalIOError);
+            }
+            membranes_.append
+            (
+                new membraneBarrier(e.keyword(), e.dict(), caseDir, g)
+            );
+            continue;
+        }
         barriers_.append(new barrier(e.keyword(), e.dict(), caseDir));
         barriers_.last().findNodes(grid.geometry(), settings_.wall);
     }
@@ -662,6 +679,10 @@ void Foam::mpm3dFlow::writeState(dictionary& state) const
             barriers_[b].monitor().passedOutflow()
         );
     }
+    for (const membraneBarrier& m : membranes_)
+    {
+        m.writeState(state);
+    }
 }
 
 
@@ -681,6 +702,10 @@ void Foam::mpm3dFlow::readState(const dictionary& state)
                 0
             )
         );
+    }
+    for (membraneBarrier& m : membranes_)
+    {
+        m.readState(state);
     }
 }
 
@@ -733,16 +758,20 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
         }
     }
     os  << nl << "    barriers: ";
-    if (barriers_.empty())
+    if (barriers_.empty() && membranes_.empty())
     {
         os  << "none (no contact computed)" << nl;
     }
     else
     {
-        os  << barriers_.size() << nl;
+        os  << barriers_.size() + membranes_.size() << nl;
         for (const barrier& b : barriers_)
         {
             b.describe(os);
+        }
+        for (const membraneBarrier& m : membranes_)
+        {
+            m.describe(os);
         }
     }
     os  << endl;
@@ -849,6 +878,25 @@ void Foam::mpm3dFlow::contact(const scalar dt)
     {
         b.applyContact(nodes_, settings_.massTol, dt);
     }
+    if (membranes_.empty())
+    {
+        return;
+    }
+    membraneContact::particleView p;
+    p.n = particles_.size();
+    for (int d = 0; d < 3; ++d)
+    {
+        p.x[d] = particles_.component(particleArrays::X + d);
+    }
+    p.m = particles_.component(particleArrays::M);
+    for (membraneBarrier& m : membranes_)
+    {
+        m.couple
+        (
+            grid_.geometry(), settings_.wall, p,
+            settings_.massTol, dt, nodes_
+        );
+    }
 }
 
 
@@ -910,6 +958,10 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
     for (barrier& b : barriers_)
     {
         b.stopEntries(g, x0, view, dt);
+    }
+    for (membraneBarrier& m : membranes_)
+    {
+        m.stopCrossings(g, view, dt);
     }
     material_->updateStress(particles_, materialView(), dt);
     outflowMass_ += removeOutflow();
