@@ -31,7 +31,12 @@ Foam::membraneBarrier::advance(const scalar dt)
     xStart_[0] = n.x;
     xStart_[1] = n.y;
     xStart_[2] = n.z;
-    const flexibleStructure::subCycleReport r = structure_.subCycle(dt);
+    const flexibleStructure::subCycleReport r = structure_.subCycle
+    (
+        dt,
+        [this]{ contact_.collideAtNodes(surface_); },
+        [this]{ contact_.settleAtNodes(surface_); }
+    );
     double move2 = 0;
     for (label i = 0; i < n.size(); ++i)
     {
@@ -98,8 +103,9 @@ void Foam::membraneBarrier::couple
     const double h = g.hMax();
     surface_.update(g, 2*h, 0.5*h);
     contact_.findSides(g, surface_, p);
-    contact_.applyAtNodes(g, surface_, wall, massTol, dt, grid);
+    contact_.findContacts(g, surface_, wall, massTol, grid);
     const flexibleStructure::subCycleReport r = advance(dt);
+    contact_.finishAtNodes(dt, grid);
     dt_ = dt;
     if (!maxSubSteps_)
     {

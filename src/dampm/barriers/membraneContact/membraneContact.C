@@ -123,7 +123,7 @@ void Foam::membraneContact::collide
         v[d] = vNew;
     }
     flowLoss_ += 0.5*m*(e0 - dot3(v, v));
-    membraneGain_ += surface.kick(q, Jq, anchored_);
+    surface.kick(q, Jq, anchored_);
 }
 
 
@@ -138,7 +138,8 @@ Foam::membraneContact::membraneContact
     condition_(condition),
     flowLoss_(0),
     membraneGain_(0),
-    force_(Zero)
+    force_(Zero),
+    J_(Zero)
 {
     for (int d = 0; d < 3; ++d)
     {
@@ -229,20 +230,20 @@ void Foam::membraneContact::findSides
 }
 
 
-void Foam::membraneContact::applyAtNodes
+void Foam::membraneContact::findContacts
 (
     const gridGeometry& g,
-    membraneSurface& surface,
+    const membraneSurface& surface,
     const bool wall[3][2],
     const double massTol,
-    const double dt,
-    mpm3dGrid& grid
+    const mpm3dGrid& grid
 )
 {
     for (int d = 0; d < 3; ++d)
     {
         std::fill(anchored_[d].begin(), anchored_[d].end(), 0.0);
     }
+    J_ = vector::zero;
     const double h = g.hMax();
     const double rim = rimTolerance*h;
     const label nt = label(touched_.size());
@@ -260,9 +261,8 @@ void Foam::membraneContact::applyAtNodes
         }
     }
 
-    // The meetings one after the other, in the order the particles found
-    // the nodes
-    double J[3] = {0, 0, 0};
+    // In the order the particles found the nodes
+    contacts_.clear();
     for (label c = 0; c < nt; ++c)
     {
         const gridGeometry::index n = touched_[c];
@@ -274,19 +274,49 @@ void Foam::membraneContact::applyAtNodes
         {
             continue;
         }
-        const double nrm[3] = {s*q.n[0], s*q.n[1], s*q.n[2]};
-        double v[3] = {grid.vx[n], grid.vy[n], grid.vz[n]};
-        collide
-        (
-            surface, q, nrm,
-            nodeContact::domainShare(g, wall, n)*grid.mass[n], v, J
-        );
-        grid.vx[n] = v[0];
-        grid.vy[n] = v[1];
-        grid.vz[n] = v[2];
+        contactNode cn;
+        cn.node = n;
+        cn.q = q;
+        for (int d = 0; d < 3; ++d)
+        {
+            cn.q.n[d] *= s;
+        }
+        cn.mass = nodeContact::domainShare(g, wall, n)*grid.mass[n];
+        cn.v[0] = grid.vx[n];
+        cn.v[1] = grid.vy[n];
+        cn.v[2] = grid.vz[n];
+        contacts_.push_back(cn);
     }
     touched_.clear();
-    force_ = vector(J[0], J[1], J[2])/dt;
+}
+
+
+void Foam::membraneContact::collideAtNodes(membraneSurface& surface)
+{
+    double J[3] = {0, 0, 0};
+    for (contactNode& c : contacts_)
+    {
+        collide(surface, c.q, c.q.n, c.mass, c.v, J);
+    }
+    J_ += vector(J[0], J[1], J[2]);
+}
+
+
+void Foam::membraneContact::settleAtNodes(membraneSurface& surface)
+{
+    membraneGain_ += surface.settleKicks();
+}
+
+
+void Foam::membraneContact::finishAtNodes(const double dt, mpm3dGrid& grid)
+{
+    for (const contactNode& c : contacts_)
+    {
+        grid.vx[c.node] = c.v[0];
+        grid.vy[c.node] = c.v[1];
+        grid.vz[c.node] = c.v[2];
+    }
+    force_ = J_/dt;
 }
 
 
@@ -349,6 +379,7 @@ Foam::label Foam::membraneContact::stopCrossings
         const double* const from = beyond ? x : xc;
         double u[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
         collide(surface, q, nrm, p.m[i], u, J);
+        membraneGain_ += surface.settleKicks();
         for (int d = 0; d < 3; ++d)
         {
             p.x[d][i] = from[d] + back*nrm[d];

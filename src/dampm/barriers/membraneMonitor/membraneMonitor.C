@@ -57,12 +57,14 @@ void Foam::membraneMonitor::openFiles
             runTime, name_, "membrane",
             {"time", "maxDeflection", "strainEnergy", "kineticEnergy",
              "dissipatedEnergy", "contactForceX", "contactForceY",
-             "contactForceZ", "contactDissipation"},
+             "contactForceZ", "contactDissipation", "momentumX", "momentumY",
+             "momentumZ"},
             {"Flexible barrier " + name_ + ": maxDeflection [m] the largest"
              " node displacement; strainEnergy (membrane and ropes),",
              "kineticEnergy, dissipatedEnergy (damping, brakes, contact) and"
              " its contactDissipation [J] since the start;",
-             "contactForce [N] the flow's force on it"}
+             "contactForce [N] the flow's force on it; momentum [kg m/s] of"
+             " its free nodes (at the last half step)"}
         )
     );
 }
@@ -97,6 +99,7 @@ void Foam::membraneMonitor::write
 
     const flexibleStructure::energyBudget& e = s.energies();
     const scalar deflection = s.maxDeflection();
+    const vector P = s.momentum();
     membraneFile_->write
     (
         List<scalar>
@@ -104,7 +107,7 @@ void Foam::membraneMonitor::write
             t, deflection, e.membraneStrain + e.ropeStrain, e.kinetic,
             e.dampingDissipation + e.brakeDissipation + contactDissipation,
             contactForce.x(), contactForce.y(), contactForce.z(),
-            contactDissipation
+            contactDissipation, P.x(), P.y(), P.z()
         })
     );
     if (deflection > peakDeflection_)

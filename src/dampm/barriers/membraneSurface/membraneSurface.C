@@ -301,42 +301,44 @@ bool Foam::membraneSurface::nearest
     }
     const size_t b = it - cells_.begin();
     // No point of a triangle is nearer than its sphere: the candidate
-    // with the nearest sphere first, then only those whose spheres come
-    // nearer than the best so far
-    auto sphereGap = [&](const label t)
+    // with the nearest centroid first, then only those whose spheres come
+    // nearer than the best so far (squared distances: no root per
+    // candidate)
+    auto centreDist2 = [&](const label t)
     {
         const double e[3] =
         {
             p[0] - centre_[0][t], p[1] - centre_[1][t], p[2] - centre_[2][t]
         };
-        return std::sqrt(dot3(e, e)) - radius_[t];
+        return dot3(e, e);
     };
     label first = start_[b];
-    double firstGap = sphereGap(tri_[first]);
+    double firstDist2 = centreDist2(tri_[first]);
     for (label k = start_[b] + 1; k < start_[b + 1]; ++k)
     {
-        const double gap = sphereGap(tri_[k]);
-        if (gap < firstGap)
+        const double d2 = centreDist2(tri_[k]);
+        if (d2 < firstDist2)
         {
             first = k;
-            firstGap = gap;
+            firstDist2 = d2;
         }
     }
     nearestOn(tri_[first], p, q);
-    double best = q.phi*q.phi + q.lateral2;
+    double best = std::sqrt(q.phi*q.phi + q.lateral2);
     nearPoint trial;
     for (label k = start_[b]; k < start_[b + 1]; ++k)
     {
-        const double gap = sphereGap(tri_[k]);
-        if (k == first || (gap > 0 && gap*gap >= best))
+        const label t = tri_[k];
+        const double reach = best + radius_[t];
+        if (k == first || centreDist2(t) >= reach*reach)
         {
             continue;
         }
-        nearestOn(tri_[k], p, trial);
-        const double d2 = trial.phi*trial.phi + trial.lateral2;
-        if (d2 < best)
+        nearestOn(t, p, trial);
+        const double d = std::sqrt(trial.phi*trial.phi + trial.lateral2);
+        if (d < best)
         {
-            best = d2;
+            best = d;
             q = trial;
         }
     }
@@ -359,7 +361,7 @@ double Foam::membraneSurface::inverseMass(const nearPoint& q) const
 }
 
 
-double Foam::membraneSurface::kick
+void Foam::membraneSurface::kick
 (
     const nearPoint& q,
     const double J[3],
@@ -367,7 +369,7 @@ double Foam::membraneSurface::kick
 )
 {
     structureNodes& n = nodes_;
-    double gain = 0;
+    isKicked_.resize(n.size(), 0);
     for (int k = 0; k < 3; ++k)
     {
         const label i = node(q.tri, k);
@@ -381,14 +383,43 @@ double Foam::membraneSurface::kick
             continue;
         }
         double* v[3] = {&n.vx[i], &n.vy[i], &n.vz[i]};
+        if (!isKicked_[i])
+        {
+            isKicked_[i] = 1;
+            kicked_.push_back(i);
+            for (int d = 0; d < 3; ++d)
+            {
+                vBefore_[d].resize(n.size());
+                impulse_[d].resize(n.size());
+                vBefore_[d][i] = *v[d];
+                impulse_[d][i] = 0;
+            }
+        }
         const double m = n.mass[i];
         for (int d = 0; d < 3; ++d)
         {
-            gain += Jk[d]*(*v[d] + 0.5*Jk[d]/m);
+            impulse_[d][i] += Jk[d];
             *v[d] += Jk[d]/m;
         }
     }
-    return gain;
+}
+
+
+double Foam::membraneSurface::settleKicks()
+{
+    const structureNodes& n = nodes_;
+    double work = 0;
+    for (const label i : kicked_)
+    {
+        const double v[3] = {n.vx[i], n.vy[i], n.vz[i]};
+        for (int d = 0; d < 3; ++d)
+        {
+            work += impulse_[d][i]*0.5*(vBefore_[d][i] + v[d]);
+        }
+        isKicked_[i] = 0;
+    }
+    kicked_.clear();
+    return work;
 }
 
 
