@@ -114,7 +114,6 @@ void Foam::membraneContact::collide
     }
     condition_.apply(n, vn, rel);
     double Jq[3];
-    const double e0 = dot3(v, v);
     for (int d = 0; d < 3; ++d)
     {
         const double vNew = vcm[d] + rel[d];
@@ -122,7 +121,6 @@ void Foam::membraneContact::collide
         J[d] += Jq[d];
         v[d] = vNew;
     }
-    flowLoss_ += 0.5*m*(e0 - dot3(v, v));
     surface.kick(q, Jq, anchored_);
 }
 
@@ -285,6 +283,7 @@ void Foam::membraneContact::findContacts
         cn.v[0] = grid.vx[n];
         cn.v[1] = grid.vy[n];
         cn.v[2] = grid.vz[n];
+        std::copy(cn.v, cn.v + 3, cn.v0);
         contacts_.push_back(cn);
     }
     touched_.clear();
@@ -310,11 +309,16 @@ void Foam::membraneContact::settleAtNodes(membraneSurface& surface)
 
 void Foam::membraneContact::finishAtNodes(const double dt, mpm3dGrid& grid)
 {
+    dv_.resize(3*grid.mass.size(), 0.0);
     for (const contactNode& c : contacts_)
     {
         grid.vx[c.node] = c.v[0];
         grid.vy[c.node] = c.v[1];
         grid.vz[c.node] = c.v[2];
+        for (int d = 0; d < 3; ++d)
+        {
+            dv_[3*c.node + d] = c.v[d] - c.v0[d];
+        }
     }
     force_ = J_/dt;
 }
@@ -378,7 +382,9 @@ Foam::label Foam::membraneContact::stopCrossings
         const double back = gap - s*q.phi;
         const double* const from = beyond ? x : xc;
         double u[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
+        const double e0 = dot3(u, u);
         collide(surface, q, nrm, p.m[i], u, J);
+        flowLoss_ += 0.5*p.m[i]*(e0 - dot3(u, u));
         membraneGain_ += surface.settleKicks();
         for (int d = 0; d < 3; ++d)
         {
