@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "membraneBarrier.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -74,6 +75,10 @@ Foam::membraneBarrier::membraneBarrier
     minSubSteps_(labelMax),
     maxSubSteps_(0)
 {
+    // The structure refuses unknown keywords itself (structureInput);
+    // the contact declared its own
+    knownKeywords::add(dict, dict.toc());
+
     // The external force: the weight (the flow's impulses change the
     // velocities at once)
     structureNodes& n = structure_.nodes();

@@ -309,7 +309,9 @@ void Foam::membraneContact::settleAtNodes(membraneSurface& surface)
 
 void Foam::membraneContact::finishAtNodes(const double dt, mpm3dGrid& grid)
 {
-    dv_.resize(3*grid.mass.size(), 0.0);
+    // The work of the step's impulses on the flow: its particles move with
+    // the nodes' velocity after the contact (x + dt v)
+    double work = 0;
     for (const contactNode& c : contacts_)
     {
         grid.vx[c.node] = c.v[0];
@@ -317,9 +319,10 @@ void Foam::membraneContact::finishAtNodes(const double dt, mpm3dGrid& grid)
         grid.vz[c.node] = c.v[2];
         for (int d = 0; d < 3; ++d)
         {
-            dv_[3*c.node + d] = c.v[d] - c.v0[d];
+            work += c.mass*(c.v[d] - c.v0[d])*c.v[d];
         }
     }
+    flowLoss_ -= work;
     force_ = J_/dt;
 }
 
@@ -382,10 +385,12 @@ Foam::label Foam::membraneContact::stopCrossings
         const double back = gap - s*q.phi;
         const double* const from = beyond ? x : xc;
         double u[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
-        const double e0 = dot3(u, u);
+        const double Jp[3] = {J[0], J[1], J[2]};
         collide(surface, q, nrm, p.m[i], u, J);
-        flowLoss_ += 0.5*p.m[i]*(e0 - dot3(u, u));
         membraneGain_ += surface.settleKicks();
+        // The impulse at the particle's velocity after it
+        flowLoss_ +=
+            (J[0] - Jp[0])*u[0] + (J[1] - Jp[1])*u[1] + (J[2] - Jp[2])*u[2];
         for (int d = 0; d < 3; ++d)
         {
             p.x[d][i] = from[d] + back*nrm[d];

@@ -937,10 +937,6 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
                 g, schedule_, kernel, stencilNodes_,
                 particles_.cellStart().data(), settings_, dt, nodes_, view
             );
-            for (membraneBarrier& m : membranes_)
-            {
-                m.measureFlowLoss(g, kernel, view);
-            }
             if (settings_.smoothJ)
             {
                 foldWalls
