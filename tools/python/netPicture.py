@@ -41,6 +41,22 @@ def peakLoad():
     return best
 
 
+def colourBy(show, field, preset, title, position):
+    """Colour a shown source by the magnitude of a point field, with a
+    scalar bar at a position of the view."""
+    pv.ColorBy(show, ("POINTS", field, "Magnitude"))
+    show.RescaleTransferFunctionToDataRange(True, False)
+    lut = pv.GetColorTransferFunction(field)
+    lut.ApplyPreset(preset, True)
+    show.SetScalarBarVisibility(view, True)
+    bar = pv.GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    bar.WindowLocation = "Any Location"
+    bar.Position = position
+
+
 tPeak, FPeak = peakLoad()
 series = json.load(open(os.path.join(case, "VTK", barrier + ".vtk.series")))["files"]
 shot = min(series, key=lambda e: abs(e["time"] - tPeak))
@@ -59,17 +75,7 @@ netShow = pv.Show(net, view)
 netShow.SetRepresentationType("Surface With Edges")
 netShow.EdgeColor = [0.25, 0.25, 0.25]
 netShow.LineWidth = 2.0
-pv.ColorBy(netShow, ("POINTS", "displacement", "Magnitude"))
-netShow.RescaleTransferFunctionToDataRange(True, False)
-netLut = pv.GetColorTransferFunction("displacement")
-netLut.ApplyPreset("Viridis (matplotlib)", True)
-netShow.SetScalarBarVisibility(view, True)
-netBar = pv.GetScalarBar(netLut, view)
-netBar.Title = "net displacement [m]"
-netBar.ComponentTitle = ""
-netBar.TitleColor = netBar.LabelColor = [0, 0, 0]
-netBar.WindowLocation = "Any Location"
-netBar.Position = [0.89, 0.05]
+colourBy(netShow, "displacement", "Viridis (matplotlib)", "net displacement [m]", [0.89, 0.05])
 
 foam = os.path.join(case, "case.foam")
 open(foam, "a").close()
@@ -82,17 +88,7 @@ flow.UpdatePipeline(time)
 flowShow = pv.Show(flow, view)
 flowShow.SetRepresentationType("Points")
 flowShow.PointSize = 3.0
-pv.ColorBy(flowShow, ("POINTS", "U", "Magnitude"))
-flowShow.RescaleTransferFunctionToDataRange(True, False)
-flowLut = pv.GetColorTransferFunction("U")
-flowLut.ApplyPreset("Inferno (matplotlib)", True)
-flowShow.SetScalarBarVisibility(view, True)
-flowBar = pv.GetScalarBar(flowLut, view)
-flowBar.Title = "flow speed [m/s]"
-flowBar.ComponentTitle = ""
-flowBar.TitleColor = flowBar.LabelColor = [0, 0, 0]
-flowBar.WindowLocation = "Any Location"
-flowBar.Position = [0.02, 0.05]
+colourBy(flowShow, "U", "Inferno (matplotlib)", "flow speed [m/s]", [0.02, 0.05])
 
 title = pv.Text(Text="%s: t = %.3g s, resultant anchor force %.3g kN (peak at %.3g s)"
                 % (os.path.basename(case), time, FPeak / 1e3, tPeak))
