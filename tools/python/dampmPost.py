@@ -6,6 +6,7 @@ Used by the tutorials' plot scripts, tests/cases and benchmarks; put
 $DAMPM_PROJECT_DIR/tools/python on sys.path (etc/bashrc sets
 DAMPM_PROJECT_DIR).
 """
+import json
 import math
 import os
 import re
@@ -122,6 +123,26 @@ def times(case):
 def latest_time(case):
     """Largest numeric time directory of a case."""
     return times(case)[-1]
+
+
+def structure_points(case, name):
+    """Node positions (N x 3) of a flexible barrier at its last write: the
+    legacy VTK file listed last in VTK/<name>.vtk.series."""
+    with open(os.path.join(case, "VTK", name + ".vtk.series")) as f:
+        last = json.load(f)["files"][-1]["name"]
+    with open(os.path.join(case, "VTK", last)) as f:
+        words = f.read().split()
+    i = words.index("POINTS")
+    n = int(words[i + 1])
+    return np.array(words[i + 3:i + 3 + 3 * n], dtype=float).reshape(n, 3)
+
+
+def cloud_positions(case, time, cloud):
+    """Particle positions (N x 3) of a lagrangian cloud written at a time."""
+    with open(os.path.join(case, str(time), "lagrangian", cloud, "positions")) as f:
+        text = f.read()
+    n, v = _list_after(text, text.index("}") + 1)
+    return v.reshape(n, 4)[:, :3]
 
 
 def ritter(x, t, h0, x0, g=9.81):
