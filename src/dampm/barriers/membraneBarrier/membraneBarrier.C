@@ -98,6 +98,7 @@ void Foam::membraneBarrier::couple
     const gridGeometry& g,
     const bool wall[3][2],
     const membraneContact::particleView& p,
+    const nodeBox& particleNodes,
     const double massTol,
     const double dt,
     mpm3dGrid& grid
@@ -107,7 +108,7 @@ void Foam::membraneBarrier::couple
     // rebuilt after a move of half a cell
     const double h = g.hMax();
     surface_.update(g, 2*h, 0.5*h);
-    contact_.findSides(g, surface_, p);
+    contact_.findSides(g, surface_, p, particleNodes);
     contact_.findContacts(g, surface_, wall, massTol, grid);
     const flexibleStructure::subCycleReport r = advance(dt);
     contact_.finishAtNodes(dt, grid);

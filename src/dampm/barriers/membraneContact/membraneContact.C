@@ -29,6 +29,9 @@ constexpr double rimTolerance = 0.5;
 // Nodes on the flow's side nearer than this take the contact [cells]
 constexpr double contactDepth = 0.5;
 
+// The sides of the particles that touched a node
+constexpr char plusSide = 1, minusSide = 2;
+
 // A particle put back sits this far on its side [cells]
 constexpr double guardGap = 1e-3;
 
@@ -46,7 +49,9 @@ void Foam::membraneContact::addSide
 (
     const gridGeometry& g,
     const double x[3],
-    const double ms
+    const double m,
+    const int side,
+    const double phi
 )
 {
     gridGeometry::index lo[3], hi[3];
@@ -65,22 +70,32 @@ void Foam::membraneContact::addSide
             g.nCells[d] + gridGeometry::nGhost
         );
     }
+    const char sideBit = side > 0 ? plusSide : minusSide;
     for (gridGeometry::index k = lo[2]; k <= hi[2]; ++k)
     {
+        const double dz = (xi[2] - k)*g.dx[2];
         const double wz = 1 - std::abs(xi[2] - k)/stencilReach;
         for (gridGeometry::index j = lo[1]; j <= hi[1]; ++j)
         {
+            const double dy = (xi[1] - j)*g.dx[1];
             const double wyz = wz*(1 - std::abs(xi[1] - j)/stencilReach);
             for (gridGeometry::index i = lo[0]; i <= hi[0]; ++i)
             {
+                const double dx = (xi[0] - i)*g.dx[0];
                 const double w = wyz*(1 - std::abs(xi[0] - i)/stencilReach);
                 const gridGeometry::index n = g.nodeIndex(i, j, k);
-                if (!isTouched_[n])
+                // The node lies at least phi - r from the membrane on the
+                // particle's side (a distance changes no faster than the
+                // point moves)
+                const double far = phi - std::sqrt(dx*dx + dy*dy + dz*dz);
+                if (!touchedSides_[n])
                 {
-                    isTouched_[n] = 1;
                     touched_.push_back(n);
+                    farOnSide_[n] = far;
                 }
-                sideSum_[n] += w*ms;
+                touchedSides_[n] |= sideBit;
+                farOnSide_[n] = std::max(farOnSide_[n], far);
+                sideSum_[n] += w*side*m;
             }
         }
     }
@@ -168,11 +183,13 @@ void Foam::membraneContact::findSides
 (
     const gridGeometry& g,
     const membraneSurface& surface,
-    const particleView& p
+    const particleView& p,
+    const nodeBox& particleNodes
 )
 {
     sideSum_.resize(g.nNodes(), 0.0);
-    isTouched_.resize(g.nNodes(), 0);
+    touchedSides_.resize(g.nNodes(), 0);
+    farOnSide_.resize(g.nNodes(), 0.0);
     touched_.clear();
     near_.clear();
     side_.clear();
@@ -183,13 +200,30 @@ void Foam::membraneContact::findSides
     }
     const double rim = rimTolerance*g.hMax();
 
-    // The particles within reach of the membrane, their nearest points
-    // searched in parallel
+    // The particles within reach of the membrane (none while their box
+    // is clear of the membrane's), their nearest points searched in
+    // parallel
     candidates_.clear();
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        lo[d] = g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
+        hi[d] = g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
+    }
+    if (particleNodes.empty() || !surface.meets(lo, hi))
+    {
+        return;
+    }
+    inReach_.resize(p.n);
+    #pragma omp parallel for schedule(static)
     for (label i = 0; i < p.n; ++i)
     {
         const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-        if (surface.inReach(g, x))
+        inReach_[i] = surface.inReach(g, x);
+    }
+    for (label i = 0; i < p.n; ++i)
+    {
+        if (inReach_[i])
         {
             candidates_.push_back(i);
         }
@@ -223,7 +257,7 @@ void Foam::membraneContact::findSides
         {
             x0_[d].push_back(x[d]);
         }
-        addSide(g, x, s*p.m[i]);
+        addSide(g, x, p.m[i], s, s*q.phi);
     }
 }
 
@@ -246,12 +280,20 @@ void Foam::membraneContact::findContacts
     const double rim = rimTolerance*h;
     const label nt = label(touched_.size());
     nearPoints_.resize(nt);
+    // The nodes with flow that may be in contact: not those the particles
+    // of one side place a cell beyond the contact's depth on their side
+    const double farEnough = (contactDepth + 1)*g.hMax();
     #pragma omp parallel for schedule(static)
     for (label c = 0; c < nt; ++c)
     {
         const gridGeometry::index n = touched_[c];
         nearPoints_[c].tri = -1;
-        if (grid.mass[n] > massTol)
+        const bool oneSide = touchedSides_[n] != (plusSide | minusSide);
+        if
+        (
+            grid.mass[n] > massTol
+         && !(oneSide && farOnSide_[n] >= farEnough)
+        )
         {
             double x[3];
             nodePosition(g, n, x);
@@ -266,7 +308,7 @@ void Foam::membraneContact::findContacts
         const gridGeometry::index n = touched_[c];
         const double s = sideSum_[n] < 0 ? -1 : 1;
         sideSum_[n] = 0;
-        isTouched_[n] = 0;
+        touchedSides_[n] = 0;
         const membraneSurface::nearPoint& q = nearPoints_[c];
         if (!onMembrane(q, rim) || s*q.phi >= contactDepth*h)
         {

@@ -99,6 +99,11 @@ void Foam::membraneSurface::build(const gridGeometry& g)
 
     // (cell, triangle) of the cells each triangle's box, grown by r, spans
     std::vector<std::pair<gridGeometry::index, label>> pairs;
+    for (int d = 0; d < 3; ++d)
+    {
+        bucketLo_[d] = 1e300;
+        bucketHi_[d] = -1e300;
+    }
     for (label t = 0; t < nTri; ++t)
     {
         gridGeometry::index lo[3], hi[3];
@@ -113,6 +118,8 @@ void Foam::membraneSurface::build(const gridGeometry& g)
             }
             lo[d] = g.cellDir(d, a - r);
             hi[d] = g.cellDir(d, b + r);
+            bucketLo_[d] = std::min(bucketLo_[d], g.nodeCoord(d, lo[d]));
+            bucketHi_[d] = std::max(bucketHi_[d], g.nodeCoord(d, hi[d] + 1));
         }
         for (gridGeometry::index k = lo[2]; k <= hi[2]; ++k)
         {
@@ -161,6 +168,7 @@ void Foam::membraneSurface::setSpheres()
     for (int d = 0; d < 3; ++d)
     {
         centre_[d].resize(nTri);
+        normal_[d].resize(nTri);
     }
     for (label t = 0; t < nTri; ++t)
     {
@@ -184,6 +192,21 @@ void Foam::membraneSurface::setSpheres()
             r2 = std::max(r2, dot3(e, e));
         }
         radius_[t] = std::sqrt(r2);
+        const double ab[3] =
+            {v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
+        const double ac[3] =
+            {v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
+        const double nrm[3] =
+        {
+            ab[1]*ac[2] - ab[2]*ac[1],
+            ab[2]*ac[0] - ab[0]*ac[2],
+            ab[0]*ac[1] - ab[1]*ac[0]
+        };
+        const double s = 1/std::sqrt(dot3(nrm, nrm));
+        for (int d = 0; d < 3; ++d)
+        {
+            normal_[d][t] = s*nrm[d];
+        }
     }
 }
 
@@ -300,10 +323,10 @@ bool Foam::membraneSurface::nearest
         return false;
     }
     const size_t b = it - cells_.begin();
-    // No point of a triangle is nearer than its sphere: the candidate
-    // with the nearest centroid first, then only those whose spheres come
-    // nearer than the best so far (squared distances: no root per
-    // candidate)
+    // No point of a triangle is nearer than its sphere or its plane: the
+    // candidate with the nearest centroid first, then only those whose
+    // spheres and planes come nearer than the best so far (squared
+    // distances: no root per candidate)
     auto centreDist2 = [&](const label t)
     {
         const double e[3] =
@@ -331,6 +354,17 @@ bool Foam::membraneSurface::nearest
         const label t = tri_[k];
         const double reach = best + radius_[t];
         if (k == first || centreDist2(t) >= reach*reach)
+        {
+            continue;
+        }
+        // Nor nearer than its plane
+        const double e[3] =
+        {
+            p[0] - centre_[0][t], p[1] - centre_[1][t], p[2] - centre_[2][t]
+        };
+        const double toPlane =
+            e[0]*normal_[0][t] + e[1]*normal_[1][t] + e[2]*normal_[2][t];
+        if (std::abs(toPlane) >= best)
         {
             continue;
         }

@@ -893,7 +893,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
     {
         m.couple
         (
-            grid_.geometry(), settings_.wall, p,
+            grid_.geometry(), settings_.wall, p, stencilNodes_,
             settings_.massTol, dt, nodes_
         );
     }
