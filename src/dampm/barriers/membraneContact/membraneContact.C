@@ -282,7 +282,7 @@ void Foam::membraneContact::findContacts
     nearPoints_.resize(nt);
     // The nodes with flow that may be in contact: not those the particles
     // of one side place a cell beyond the contact's depth on their side
-    const double farEnough = (contactDepth + 1)*g.hMax();
+    const double farEnough = (contactDepth + 1)*h;
     #pragma omp parallel for schedule(static)
     for (label c = 0; c < nt; ++c)
     {
