@@ -10,6 +10,7 @@ License
 
 #include "membraneBarrier.H"
 #include "knownKeywords.H"
+#include "boundBox.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -92,6 +93,35 @@ Foam::membraneBarrier::membraneBarrier
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::membraneBarrier::checkInMesh
+(
+    const gridGeometry& g,
+    const dictionary& dict
+) const
+{
+    const structureNodes& n = structure_.nodes();
+    boundBox nodes;
+    for (label i = 0; i < n.size(); ++i)
+    {
+        nodes.add(n.position(i));
+    }
+    const boundBox mesh
+    (
+        point(g.origin[0], g.origin[1], g.origin[2]),
+        point(g.upper(0), g.upper(1), g.upper(2))
+    );
+    if (!nodes.overlaps(mesh))
+    {
+        FatalIOErrorInFunction(dict)
+            << "flexible barrier " << name_ << " lies wholly outside the mesh:"
+            << " its nodes span " << nodes.min() << " to " << nodes.max()
+            << ", the mesh " << mesh.min() << " to " << mesh.max()
+            << "; allowed: a membrane that meets the mesh (see its geometry)"
+            << exit(FatalIOError);
+    }
+}
+
 
 void Foam::membraneBarrier::couple
 (

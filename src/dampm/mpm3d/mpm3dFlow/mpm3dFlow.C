@@ -575,6 +575,7 @@ Foam::mpm3dFlow::mpm3dFlow
             (
                 new membraneBarrier(e.keyword(), e.dict(), caseDir, g)
             );
+            membranes_.last().checkInMesh(grid.geometry(), e.dict());
             continue;
         }
         barriers_.append(new barrier(e.keyword(), e.dict(), caseDir));
