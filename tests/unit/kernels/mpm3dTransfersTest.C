@@ -153,17 +153,6 @@ void p2g
     );
 }
 
-// Node position per axis [m]
-void nodePosition(const gridGeometry& g, const gridIndex n, double xi[3])
-{
-    gridIndex ijk[3];
-    g.nodeIJK(n, ijk);
-    for (int d = 0; d < 3; ++d)
-    {
-        xi[d] = g.nodeCoord(d, ijk[d]);
-    }
-}
-
 } // End anonymous namespace
 
 
@@ -314,7 +303,7 @@ TEST(mpm3dTransfers, UniformStressPushesOnlyOnTheSurface)
         gridIndex ijk[3];
         g.nodeIJK(n, ijk);
         double xi[3];
-        nodePosition(g, n, xi);
+        g.nodePosition(n, xi);
         // The B-spline's support, 3 cells, inside the filled cells
         bool interior = true;
         for (int d = 0; d < 3; ++d)
@@ -368,7 +357,7 @@ TEST(mpm3dTransfers, G2PReproducesLinearVelocityField)
     for (gridIndex n = 0; n < g.nNodes(); ++n)
     {
         double xi[3];
-        nodePosition(g, n, xi);
+        g.nodePosition(n, xi);
         for (int a = 0; a < 3; ++a)
         {
             v[a][n] = v0[a] + B[a][0]*xi[0] + B[a][1]*xi[1] + B[a][2]*xi[2];

@@ -89,15 +89,9 @@ void Foam::barrierMonitor::finishSearch
     passLevel_ = -GREAT;
     for (const gridGeometry::index n : contactNodes)
     {
-        gridGeometry::index ijk[3];
-        g.nodeIJK(n, ijk);
-        const point x
-        (
-            g.nodeCoord(0, ijk[0]),
-            g.nodeCoord(1, ijk[1]),
-            g.nodeCoord(2, ijk[2])
-        );
-        passLevel_ = max(passLevel_, x & overtopDir_);
+        double x[3];
+        g.nodePosition(n, x);
+        passLevel_ = max(passLevel_, point(x[0], x[1], x[2]) & overtopDir_);
     }
     // No node inside a barrier thinner than the node spacing: its far
     // side, from its bounding box

@@ -163,22 +163,6 @@ Foam::membraneContact::membraneContact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::membraneContact::nodePosition
-(
-    const gridGeometry& g,
-    const gridGeometry::index n,
-    double x[3]
-)
-{
-    gridGeometry::index ijk[3];
-    g.nodeIJK(n, ijk);
-    for (int d = 0; d < 3; ++d)
-    {
-        x[d] = g.nodeCoord(d, ijk[d]);
-    }
-}
-
-
 void Foam::membraneContact::findSides
 (
     const gridGeometry& g,
@@ -296,7 +280,7 @@ void Foam::membraneContact::findContacts
         )
         {
             double x[3];
-            nodePosition(g, n, x);
+            g.nodePosition(n, x);
             surface.nearest(g, x, nearPoints_[c]);
         }
     }

@@ -277,14 +277,9 @@ Foam::label Foam::mpmGrid::findCell(const point& p) const
 
 Foam::point Foam::mpmGrid::nodePosition(const label nodei) const
 {
-    gridGeometry::index ijk[3];
-    geom_.nodeIJK(nodei, ijk);
-    return point
-    (
-        geom_.nodeCoord(0, ijk[0]),
-        geom_.nodeCoord(1, ijk[1]),
-        is2D() ? 0 : geom_.nodeCoord(2, ijk[2])
-    );
+    double x[3];
+    geom_.nodePosition(nodei, x);
+    return point(x[0], x[1], x[2]);
 }
 
 
