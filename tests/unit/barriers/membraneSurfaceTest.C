@@ -23,6 +23,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "membraneSurface.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -36,16 +37,7 @@ namespace
 //- A grid around the unit cube, every cell within reach of the triangles
 gridGeometry cubeGrid()
 {
-    gridGeometry g;
-    g.dim = 3;
-    for (int d = 0; d < 3; ++d)
-    {
-        g.origin[d] = -2;
-        g.dx[d] = 0.5;
-        g.nCells[d] = 8;
-    }
-    g.finalise();
-    return g;
+    return uniformGrid(3, {-2, -2, -2}, {0.5, 0.5, 0.5}, {8, 8, 8});
 }
 
 //- Nodes from points, each of mass 1

@@ -15,6 +15,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "depthAveragedSeeding.H"
 #include "depthAveragedParticles.H"
 #include "depthAveragedKernels.H"
@@ -38,14 +39,7 @@ constexpr scalar rho = 1500;
 // 20 x 16 cells of 1 x 0.5 m from (0, 0)
 gridGeometry makeGrid()
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.dx[1] = 0.5;
-    g.nCells[0] = 20;
-    g.nCells[1] = 16;
-    g.nCells[2] = 1;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {0, 0, 0}, {1, 0.5, 1}, {20, 16, 1});
 }
 
 dictionary fromText(const std::string& text)

@@ -16,6 +16,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "depthAveragedSplitting.H"
 #include "depthAveragedParticles.H"
 #include "IStringStream.H"
@@ -36,17 +37,7 @@ const double rho = 1000;
 // 40 x 30 cells of 0.5 x 0.25 m from (-2, 1); 2 x 2 seed columns per cell
 gridGeometry makeGrid()
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.origin[0] = -2;
-    g.origin[1] = 1;
-    g.dx[0] = 0.5;
-    g.dx[1] = 0.25;
-    g.nCells[0] = 40;
-    g.nCells[1] = 30;
-    g.nCells[2] = 1;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {-2, 1, 0}, {0.5, 0.25, 1}, {40, 30, 1});
 }
 
 const label nPerCell = 2;

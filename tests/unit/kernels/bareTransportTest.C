@@ -28,6 +28,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "bareTransport.H"
 #include <gtest/gtest.h>
 #include <chrono>
@@ -71,12 +72,7 @@ int benchmarkCells()
 
 gridGeometry benchmarkGrid(const int nCells)
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.dx[0] = g.dx[1] = 0.2;
-    g.nCells[0] = g.nCells[1] = nCells;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {0, 0, 0}, {0.2, 0.2, 1}, {nCells, nCells, 1});
 }
 
 // The release of the benchmarks: the h0 layer on the seed lattice (nPer

@@ -16,6 +16,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "mpm3dKernels.H"
 #include "particleArrays.H"
 #include "shapeKernels.H"
@@ -33,13 +34,7 @@ namespace
 // both y sides and the floor, open at x max and the top
 gridGeometry channel()
 {
-    gridGeometry g;
-    g.dx[0] = g.dx[1] = g.dx[2] = 0.05;
-    g.nCells[0] = 12;
-    g.nCells[1] = 8;
-    g.nCells[2] = 10;
-    g.finalise();
-    return g;
+    return uniformGrid(3, {0, 0, 0}, {0.05, 0.05, 0.05}, {12, 8, 10});
 }
 
 constexpr bool channelWalls[3][2] =

@@ -15,6 +15,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "mpm3dKernels.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
@@ -32,18 +33,7 @@ typedef quadraticBSplineKernel kernel3;
 // 10 x 8 x 9 cells of unequal sizes (an axis mixed up shows)
 gridGeometry box()
 {
-    gridGeometry g;
-    g.origin[0] = -0.3;
-    g.origin[1] = 0.2;
-    g.origin[2] = 0;
-    g.dx[0] = 0.1;
-    g.dx[1] = 0.12;
-    g.dx[2] = 0.09;
-    g.nCells[0] = 10;
-    g.nCells[1] = 8;
-    g.nCells[2] = 9;
-    g.finalise();
-    return g;
+    return uniformGrid(3, {-0.3, 0.2, 0}, {0.1, 0.12, 0.09}, {10, 8, 9});
 }
 
 // The cells [lo, hi) per axis that hold particles

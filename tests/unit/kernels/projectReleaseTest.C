@@ -17,6 +17,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "depthAveragedKernels.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
@@ -36,17 +37,7 @@ constexpr double exactTol = 1e-13;      // [m], depths of about 1 m
 
 gridGeometry makeGrid()
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.origin[0] = -3;
-    g.origin[1] = 1;
-    g.dx[0] = 0.25;
-    g.dx[1] = 0.2;
-    g.nCells[0] = 48;
-    g.nCells[1] = 40;
-    g.nCells[2] = 1;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {-3, 1, 0}, {0.25, 0.2, 1}, {48, 40, 1});
 }
 
 struct release

@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "particleTransfers.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
@@ -34,19 +35,13 @@ constexpr double conservationTol = 1e-13;  // relative
 
 gridGeometry makeGrid(const int dim)
 {
-    gridGeometry g;
-    g.dim = dim;
-    g.origin[0] = 10;
-    g.origin[1] = -5;
-    g.origin[2] = 2;
-    g.dx[0] = 0.4;
-    g.dx[1] = 0.5;
-    g.dx[2] = 0.25;
-    g.nCells[0] = dim == 2 ? 40 : 14;
-    g.nCells[1] = dim == 2 ? 30 : 11;
-    g.nCells[2] = dim == 2 ? 1 : 9;
-    g.finalise();
-    return g;
+    return uniformGrid
+    (
+        dim, {10, -5, 2}, {0.4, 0.5, 0.25},
+        dim == 2
+      ? std::array<gridGeometry::index, 3>{40, 30, 1}
+      : std::array<gridGeometry::index, 3>{14, 11, 9}
+    );
 }
 
 // Random particles (4 per cell on average) with random masses

@@ -13,6 +13,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "particleArrays.H"
 #include "shapeKernels.H"
 #include "stencil.H"
@@ -29,14 +30,7 @@ namespace
 
 gridGeometry grid2D()
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.dx[0] = g.dx[1] = 0.5;
-    g.dx[2] = 1;
-    g.nCells[0] = 16;
-    g.nCells[1] = 9;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {0, 0, 0}, {0.5, 0.5, 1}, {16, 9, 1});
 }
 
 // Particles with an id and a value that is a function of the id
@@ -197,12 +191,8 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
 // (a flow over a slope in a 3D box) leaves most of its box out
 TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
 {
-    gridGeometry g;
-    g.dx[0] = g.dx[1] = g.dx[2] = 0.25;
-    g.nCells[0] = 40;
-    g.nCells[1] = 12;
-    g.nCells[2] = 30;
-    g.finalise();
+    const gridGeometry g =
+        uniformGrid(3, {0, 0, 0}, {0.25, 0.25, 0.25}, {40, 12, 30});
     const label maxStale = 1;
 
     // A layer a cell thick over the slope z = 0.5 + 0.6 x

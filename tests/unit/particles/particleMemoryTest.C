@@ -15,6 +15,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "particleMemory.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
@@ -29,10 +30,7 @@ namespace
 
 gridGeometry grid3D()
 {
-    // dim, origin, cell sizes, their inverses (finalise), cells per axis
-    gridGeometry g{3, {-1, 2, 0.5}, {0.5, 0.25, 1}, {}, {7, 5, 3}};
-    g.finalise();
-    return g;
+    return uniformGrid(3, {-1, 2, 0.5}, {0.5, 0.25, 1}, {7, 5, 3});
 }
 
 

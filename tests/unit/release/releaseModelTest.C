@@ -20,6 +20,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "releaseModel.H"
 #include "OSspecific.H"
 #include "testCase.H"
@@ -44,12 +45,7 @@ constexpr scalar rho = 1000;
 //- A 2D grid of 20 x 20 cells of 1 m from (0 0)
 gridGeometry grid()
 {
-    gridGeometry g;
-    g.dim = 2;
-    g.nCells[0] = 20;
-    g.nCells[1] = 20;
-    g.finalise();
-    return g;
+    return uniformGrid(2, {0, 0, 0}, {1, 1, 1}, {20, 20, 1});
 }
 
 

@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "uniformGrid.H"
 #include "stencil.H"
 #include "visitShape.H"
 #include "error.H"
@@ -34,19 +35,7 @@ constexpr double fdTol = 1e-6;         // central difference, h = 1e-6 dx
 
 gridGeometry makeGrid(const int dim)
 {
-    gridGeometry g;
-    g.dim = dim;
-    const double origin[3] = {-3.0, 2.0, 100.0};
-    const double dx[3] = {0.5, 0.25, 2.0};
-    const int n[3] = {11, 7, 5};
-    for (int d = 0; d < 3; ++d)
-    {
-        g.origin[d] = origin[d];
-        g.dx[d] = dx[d];
-        g.nCells[d] = n[d];
-    }
-    g.finalise();
-    return g;
+    return uniformGrid(dim, {-3, 2, 100}, {0.5, 0.25, 2}, {11, 7, 5});
 }
 
 
