@@ -9,7 +9,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "membraneBarrier.H"
-#include "knownKeywords.H"
 #include "boundBox.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -76,10 +75,6 @@ Foam::membraneBarrier::membraneBarrier
     minSubSteps_(labelMax),
     maxSubSteps_(0)
 {
-    // The structure refuses unknown keywords itself (structureInput);
-    // the contact declared its own
-    knownKeywords::add(dict, dict.toc());
-
     // The external force: the weight (the flow's impulses change the
     // velocities at once)
     structureNodes& n = structure_.nodes();

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureInput.H"
+#include "knownKeywords.H"
 #include "boundedScalar.H"
 #include "FlatOutput.H"
 #include <cmath>
@@ -51,6 +52,8 @@ void Foam::structureInput::onlyKeywords
     const wordList& allowed
 )
 {
+    // Checked here: the suite's unread-keyword warnings need not look
+    knownKeywords::add(dict, allowed);
     for (const entry& e : dict)
     {
         if (!allowed.found(e.keyword()))
