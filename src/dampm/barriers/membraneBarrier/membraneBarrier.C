@@ -122,7 +122,7 @@ void Foam::membraneBarrier::couple
 (
     const gridGeometry& g,
     const bool wall[3][2],
-    const membraneContact::particleView& p,
+    const mpm3dParticles& p,
     const nodeBox& particleNodes,
     const double massTol,
     const double dt,

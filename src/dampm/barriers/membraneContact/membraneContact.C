@@ -167,7 +167,7 @@ void Foam::membraneContact::findSides
 (
     const gridGeometry& g,
     const membraneSurface& surface,
-    const particleView& p,
+    const mpm3dParticles& p,
     const nodeBox& particleNodes
 )
 {

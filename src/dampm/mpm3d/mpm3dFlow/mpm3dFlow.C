@@ -883,13 +883,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
     {
         return;
     }
-    membraneContact::particleView p;
-    p.n = particles_.size();
-    for (int d = 0; d < 3; ++d)
-    {
-        p.x[d] = particles_.component(particleArrays::X + d);
-    }
-    p.m = particles_.component(particleArrays::M);
+    const mpm3dParticles p = kernelView();
     for (membraneBarrier& m : membranes_)
     {
         m.couple
