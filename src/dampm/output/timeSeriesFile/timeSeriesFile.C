@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "timeSeriesFile.H"
+#include "OStringStream.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -56,7 +57,7 @@ Foam::timeSeriesFile::timeSeriesFile
 
 void Foam::timeSeriesFile::checkWritten() const
 {
-    if (!os_->good())
+    if (!os_->good() || !os_->stdStream().good())
     {
         FatalErrorInFunction
             << "cannot write " << os_->name() << " (disk full, or the"
@@ -76,12 +77,17 @@ void Foam::timeSeriesFile::write(const UList<scalar>& row)
             << row.size() << " values for the " << columns_.size()
             << " columns of " << os_->name() << abort(FatalError);
     }
-    OFstream& os = *os_;
+    // Formatted first and written in one piece: a failed write (a full
+    // disk) comes to checkWritten, not to OpenFOAM's own stream check
+    OStringStream line;
+    line.precision(os_->precision());
     forAll(row, i)
     {
-        os  << (i ? " " : "") << row[i];
+        line << (i ? " " : "") << row[i];
     }
-    os  << endl;
+    std::ostream& os = os_->stdStream();
+    os  << line.str() << '\n';
+    os.flush();
     checkWritten();
 }
 
