@@ -40,8 +40,13 @@ double Foam::stepTimers::elapsed() const
 
 double Foam::stepTimers::updatesPerSecond() const
 {
-    const double t = elapsed();
-    return t > 0 ? particleUpdates_/t : 0;
+    return updatesPerSecond(elapsed());
+}
+
+
+double Foam::stepTimers::updatesPerSecond(const double seconds) const
+{
+    return seconds > 0 ? particleUpdates_/seconds : 0;
 }
 
 
