@@ -273,6 +273,18 @@ void Foam::mpmTimeControls::checkControlDict
             << " minDeltaT)" << exit(FatalIOError);
     }
 
+    // The wall time between the log's progress lines (runProgress)
+    const char* const progressAllowed =
+        "finite progressInterval >= 0 [s] (0: a progress line every step)";
+    const scalar progressInterval =
+        finiteNumber(dict, "progressInterval", progressAllowed, found);
+    if (found && !(progressInterval >= 0))
+    {
+        FatalIOErrorInFunction(where(dict, "progressInterval"))
+            << "progressInterval = " << progressInterval << " is invalid;"
+            << " allowed: " << progressAllowed << exit(FatalIOError);
+    }
+
     // Writes: Time divides by writeInterval and counts the intervals in a
     // label
     const word writeControl =
