@@ -20,10 +20,12 @@ Description
     The method: doc/dampmFoam-discretisation.md.
 
     Reads constant/dampmProperties, constant/g and system/controlDict
-    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT); writes the particle cloud
-    dampmCloud, the grid fields h, U, Z and the hazard maps at every write
-    time, and
-    postProcessing/dampmFoam/<startTime>/summary.dat every step.
+    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT, progressInterval); writes
+    the particle cloud dampmCloud, the grid fields h, U, Z and the hazard
+    maps at every write time, and
+    postProcessing/dampmFoam/<startTime>/summary.dat every step. The log:
+    a line per step, the progress (runProgress) every progressInterval
+    seconds of wall time, ExecutionTime at write times.
     With a handOff sub-dictionary it ends the run-out by itself, writing the
     time for depthToParticles3D, at a set time or when the front comes
     within a distance of the 3D region (handOff.H).
@@ -41,6 +43,7 @@ Description
 #include "hazardMaps.H"
 #include "handOff.H"
 #include "stepTimers.H"
+#include "runProgress.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"
 #include "knownKeywords.H"
@@ -113,6 +116,7 @@ int main(int argc, char *argv[])
             #include "writeFields.H"
             timers.run(stepTimers::IO, [&]{ runTime.write(); });
         }
+        progress.update(Info, runTime, timers);
     }
 
     if (!handOff3D.ended())
@@ -120,6 +124,7 @@ int main(int argc, char *argv[])
         handOff3D.reportNotDue(Info);
     }
     timers.report(Info);
+    runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;
 
     runTime.exitIfStopped();

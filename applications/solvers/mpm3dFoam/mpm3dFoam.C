@@ -21,11 +21,14 @@ Description
     with contact at the grid nodes. The method: doc/mpm3dFoam.md.
 
     Reads constant/mpm3dProperties, constant/g and system/controlDict
-    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT); writes the particle cloud
-    mpm3dCloud and the node velocity U at every write time, and every step
-    postProcessing/mpm3dFoam/<startTime>/summary.dat and energy.dat and, for
-    every barrier, postProcessing/<barrier>/<startTime>/force.dat (and
-    overtopping.dat when it measures overtopping).
+    (adjustTimeStep, maxCo, maxDeltaT, minDeltaT, progressInterval); writes
+    the particle cloud mpm3dCloud and the node velocity U at every write
+    time, and every step postProcessing/mpm3dFoam/<startTime>/summary.dat
+    and energy.dat and, for every barrier,
+    postProcessing/<barrier>/<startTime>/force.dat (and overtopping.dat when
+    it measures overtopping). The log: a line per step, the progress
+    (runProgress) every progressInterval seconds of wall time, ExecutionTime
+    at write times.
     Started from a conversion (depthToParticles3D), it keeps accumulating
     the run-out's hazard maps on its grid (runOutMaps):
     postProcessing/hazardMaps/<time>/ cover the whole event.
@@ -43,6 +46,7 @@ Description
 #include "timeSeriesFile.H"
 #include "surfaceProbes.H"
 #include "stepTimers.H"
+#include "runProgress.H"
 #include "runOutMaps.H"
 #include "mpmTimeControls.H"
 #include "particleMemory.H"
@@ -101,10 +105,12 @@ int main(int argc, char *argv[])
             flow.monitorBarriers(runTime.value());
             #include "writeOutput.H"
         });
+        progress.update(Info, runTime, timers);
     }
 
     #include "reportBarriers.H"
     timers.report(Info);
+    runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;
 
     runTime.exitIfStopped();
