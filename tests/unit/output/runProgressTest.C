@@ -92,10 +92,14 @@ TEST(runProgress, TimeLeftIsUnknownBeforeThereIsARate)
 
 TEST(runProgress, TimeLeftOfAFarEndTimeIsCappedNotOverflowing)
 {
-    // The solvers trap overflow: 1e300 s to go at 1e-300 s per second
+    // The solvers trap overflow. 1e300 s to go after 1e-300 s in 1 s:
+    // capped; half of 2e300 s in 1e-9 s and 1 s of 1e300 s in 1e-300 s:
+    // large ratios whose products are ordinary
     const solverFpTraps traps;
     const runProgress progress(0, 5);
     EXPECT_EQ(progress.timeLeft(1e-300, 1e300, 1), GREAT);
+    EXPECT_EQ(progress.timeLeft(1e300, 2e300, 1e-9), 1e-9);
+    EXPECT_DOUBLE_EQ(progress.timeLeft(1, 1e300, 1e-300), 1);
     EXPECT_EQ(progress.percent(1e-300, 1e300), 0);
 }
 

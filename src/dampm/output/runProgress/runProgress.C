@@ -67,11 +67,13 @@ Foam::scalar Foam::runProgress::timeLeft
     {
         return -1;
     }
-    // Wall time per simulated time so far, times the simulated time left;
-    // capped rather than overflowing (the solvers trap overflow) when a
-    // tiny step meets a far endTime
+    // Wall time per simulated time so far, times the simulated time left,
+    // from the share done f: numbers in [0, 1] and wall only, so that a
+    // tiny step and a far endTime cap the estimate instead of overflowing
+    // (the solvers trap overflow)
     const scalar left = max(endTime - t, scalar(0));
-    return left < done*(GREAT/wall) ? wall*(left/done) : GREAT;
+    const scalar f = done/(done + left);
+    return wall*(1 - f) < f*GREAT ? wall*(1 - f)/f : GREAT;
 }
 
 
