@@ -145,6 +145,23 @@ def cloud_positions(case, time, cloud):
     return v.reshape(n, 4)[:, :3]
 
 
+def elastic_cloud_energy(case, time, E, nu, h, cloud="mpm3dCloud"):
+    """Kinetic and elastic energy [J] of a linear elastic cloud written at a
+    time, and its x momentum [kg m/s]: kinetic with APIC's affine part
+    (quadratic B-splines: D = h^2/4, h the cell size), elastic from sigma
+    and V."""
+    def field(name):
+        return np.array(read_field(case, time, name, cloud=cloud))
+    m, u, C = field("m"), field("U"), field("gradU")
+    s, V = field("sigma"), field("V")
+    xx, xy, xz, yy, yz, zz = s.T
+    w = ((1 + nu) * (xx**2 + yy**2 + zz**2 + 2 * (xy**2 + xz**2 + yz**2))
+         - nu * (xx + yy + zz)**2) / (2 * E)
+    kinetic = 0.5 * (m * (u**2).sum(axis=1)).sum() \
+        + 0.5 * (m * h**2 / 4 * (C**2).sum(axis=1)).sum()
+    return kinetic + (w * V).sum(), (m * u[:, 0]).sum()
+
+
 def ritter(x, t, h0, x0, g=9.81):
     """Ritter's dry-bed dam break: height and velocity at x (array), time t,
     reservoir of depth h0 for x < x0."""

@@ -188,13 +188,7 @@ void Foam::membraneContact::findSides
     // is clear of the membrane's), their nearest points searched in
     // parallel
     candidates_.clear();
-    double lo[3], hi[3];
-    for (int d = 0; d < 3; ++d)
-    {
-        lo[d] = g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
-        hi[d] = g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
-    }
-    if (particleNodes.empty() || !surface.meets(lo, hi))
+    if (!surface.meets(g, particleNodes))
     {
         return;
     }
