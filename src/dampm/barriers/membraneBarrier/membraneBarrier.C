@@ -10,7 +10,6 @@ License
 
 #include "membraneBarrier.H"
 #include "boundBox.H"
-#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -21,34 +20,7 @@ Foam::dictionary Foam::membraneBarrier::structureDict(const dictionary& dict)
     {
         s.remove(key);
     }
-    s.remove("maxContactCo");
     return s;
-}
-
-
-Foam::scalar Foam::membraneBarrier::readMaxContactCo(const dictionary& dict)
-{
-    knownKeywords::add(dict, {"maxContactCo"});
-    if (!dict.found("maxContactCo"))
-    {
-        return 0;
-    }
-    const scalar co = dict.get<scalar>("maxContactCo");
-    if (!(co > 0 && co < GREAT))
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxContactCo = " << co << " is invalid; allowed: a number"
-            << " > 0, the largest flow step times the frequency of a flow"
-            << " node on the membrane (e.g. 0.5), or no entry (no limit)"
-            << exit(FatalIOError);
-    }
-    return co;
-}
-
-
-Foam::scalar Foam::membraneBarrier::contactFrequency(const scalar m) const
-{
-    return 2/structure_.membraneCriticalTimeStep()*std::sqrt(meanNodeMass_/m);
 }
 
 
@@ -98,9 +70,6 @@ Foam::membraneBarrier::membraneBarrier
     contact_(condition_, structure_.nodes().size()),
     monitor_(name, structure_.anchors().names().size()),
     g_(g),
-    maxContactCo_(readMaxContactCo(dict)),
-    meanNodeMass_(0),
-    contactCourant_(0),
     dt_(1),
     move_(0),
     minSubSteps_(labelMax),
@@ -109,63 +78,16 @@ Foam::membraneBarrier::membraneBarrier
     // The external force: the weight (the flow's impulses change the
     // velocities at once)
     structureNodes& n = structure_.nodes();
-    label nFree = 0;
     for (label i = 0; i < n.size(); ++i)
     {
         n.fExtX[i] = n.mass[i]*g_.x();
         n.fExtY[i] = n.mass[i]*g_.y();
         n.fExtZ[i] = n.mass[i]*g_.z();
-        if (!n.fixed[i])
-        {
-            meanNodeMass_ += n.mass[i];
-            ++nFree;
-        }
     }
-    meanNodeMass_ = nFree ? meanNodeMass_/nFree : GREAT;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::membraneBarrier::stableDeltaT
-(
-    const gridGeometry& g,
-    const nodeBox& particleNodes,
-    const scalar flowNodeMass
-) const
-{
-    if (!(maxContactCo_ > 0) || particleNodes.empty())
-    {
-        return GREAT;
-    }
-    // Near: the particles' nodes within the reach of the structure's
-    // bounding box (its bucket's reach), from the state alone
-    const structureNodes& n = structure_.nodes();
-    const double reach = 2.5*g.hMax();
-    double lo[3] = {GREAT, GREAT, GREAT}, hi[3] = {-GREAT, -GREAT, -GREAT};
-    for (label i = 0; i < n.size(); ++i)
-    {
-        const double x[3] = {n.x[i], n.y[i], n.z[i]};
-        for (int d = 0; d < 3; ++d)
-        {
-            lo[d] = min(lo[d], x[d]);
-            hi[d] = max(hi[d], x[d]);
-        }
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-        const double pLo =
-            g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
-        const double pHi =
-            g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
-        if (pLo > hi[d] + reach || pHi < lo[d] - reach)
-        {
-            return GREAT;
-        }
-    }
-    return maxContactCo_/contactFrequency(flowNodeMass);
-}
-
 
 void Foam::membraneBarrier::checkInMesh
 (
@@ -204,7 +126,6 @@ void Foam::membraneBarrier::couple
     const nodeBox& particleNodes,
     const double massTol,
     const double dt,
-    const double flowNodeMass,
     mpm3dGrid& grid
 )
 {
@@ -214,11 +135,6 @@ void Foam::membraneBarrier::couple
     surface_.update(g, 2*h, 0.5*h);
     contact_.findSides(g, surface_, p, particleNodes);
     contact_.findContacts(g, surface_, wall, massTol, grid);
-    if (contact_.inContact())
-    {
-        contactCourant_ =
-            max(contactCourant_, dt*contactFrequency(flowNodeMass));
-    }
     const flexibleStructure::subCycleReport r = advance(dt);
     contact_.finishAtNodes(dt, grid);
     dt_ = dt;
@@ -296,21 +212,6 @@ void Foam::membraneBarrier::report(Ostream& os) const
             << maxSubSteps_ << " (stable step " << structure_.stableTimeStep()
             << " s, " << structure_.limiter().c_str() << ")" << nl;
     }
-    if (contactCourant_ > 0)
-    {
-        os  << "    contact Courant number dt omega (a flow node on the"
-            << " membrane): up to " << contactCourant_;
-        if (maxContactCo_ > 0)
-        {
-            os  << " (maxContactCo " << maxContactCo_ << ")";
-        }
-        else if (contactCourant_ > 1)
-        {
-            os  << " (above 1 an elastic impact can gain energy: see"
-                << " maxContactCo)";
-        }
-        os  << nl;
-    }
 }
 
 
@@ -323,12 +224,7 @@ void Foam::membraneBarrier::describe(Ostream& os) const
         << flatOutput(s.anchors().names()) << ", contact ";
     condition_.describe(os);
     os  << ", stable step " << s.stableTimeStep() << " s ("
-        << s.limiter().c_str() << ")";
-    if (maxContactCo_ > 0)
-    {
-        os  << ", maxContactCo " << maxContactCo_;
-    }
-    os  << nl;
+        << s.limiter().c_str() << ")" << nl;
 }
 
 

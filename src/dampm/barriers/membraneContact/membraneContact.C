@@ -188,7 +188,13 @@ void Foam::membraneContact::findSides
     // is clear of the membrane's), their nearest points searched in
     // parallel
     candidates_.clear();
-    if (!surface.meets(g, particleNodes))
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        lo[d] = g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
+        hi[d] = g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
+    }
+    if (particleNodes.empty() || !surface.meets(lo, hi))
     {
         return;
     }

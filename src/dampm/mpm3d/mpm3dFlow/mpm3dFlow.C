@@ -853,19 +853,6 @@ Foam::scalar Foam::mpm3dFlow::stableDeltaT
     scalar dt = maxCo*h/(material_->waveSpeed() + std::sqrt(maxU2));
     limit = "wave";
 
-    // A flow node on a membrane: its oscillation on the membrane's
-    // stiffness, which the flow steps through
-    for (const membraneBarrier& m : membranes_)
-    {
-        const scalar dtContact =
-            m.stableDeltaT(g, stencilNodes_, flowNodeMass());
-        if (dtContact < dt)
-        {
-            dt = dtContact;
-            limit = "membrane";
-        }
-    }
-
     const scalar mu = material_->explicitViscosity();
     if (mu > 0)
     {
@@ -902,7 +889,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
         m.couple
         (
             grid_.geometry(), settings_.wall, p, stencilNodes_,
-            settings_.massTol, dt, flowNodeMass(), nodes_
+            settings_.massTol, dt, nodes_
         );
     }
 }

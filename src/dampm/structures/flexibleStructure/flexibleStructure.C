@@ -156,7 +156,6 @@ void Foam::flexibleStructure::setStableTimeStep(const scalar safety)
     }
 
     // The highest frequency 2/dt with damping ratio xi = beta*omega/2
-    dtMembraneCritical_ = dtMembrane;
     const scalar xi = beta_/dt;
     dtStable_ = safety*dt*(std::sqrt(1 + xi*xi) - xi);
 }
