@@ -264,7 +264,8 @@ TEST(ensembleSample, BadInputIsRefusedNamingFileAndKeyword)
     refused
     (
         twoParameters("sampling random; members 5; seed 1;"),
-        "latinHypercube"
+        "sampling random is invalid; allowed: sampling 3(fullFactorial"
+        " latinHypercube monteCarlo)"
     );
     refused
     (

@@ -79,6 +79,22 @@ void valuePaths
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::ensembleSample::samplingType Foam::ensembleSample::readSampling
+(
+    const dictionary& dict
+)
+{
+    const word name(dict.getOrDefault<word>("sampling", "latinHypercube"));
+    if (!samplingTypeNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "sampling " << name << " is invalid; allowed: sampling "
+            << samplingTypeNames.sortedToc() << exit(FatalIOError);
+    }
+    return samplingTypeNames[name];
+}
+
+
 void Foam::ensembleSample::readParameters()
 {
     const dictionary& parameters = dict_.subDict("parameters");
@@ -277,13 +293,7 @@ Foam::ensembleSample::ensembleSample
 :
     dict_(ensembleDict),
     caseDir_(caseDir),
-    sampling_
-    (
-        samplingTypeNames.getOrDefault
-        (
-            "sampling", ensembleDict, samplingType::latinHypercube
-        )
-    ),
+    sampling_(readSampling(ensembleDict)),
     nMembers_(0)
 {
     knownKeywords::add(dict_, {"sampling", "parameters"});
