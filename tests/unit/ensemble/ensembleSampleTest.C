@@ -319,6 +319,13 @@ TEST(ensembleSample, BadInputIsRefusedNamingFileAndKeyword)
         ),
         "levels = 0 is invalid; allowed: levels >= 1"
     );
+    refused
+    (
+        "members 5; seed 1; parameters { r { distribution uniform; min 0;"
+        " max 1; scenarios { a {"
+        " \"constant/dampmProperties/release/height\" 1; } } } }",
+        "has scenarios but distribution uniform; allowed: distribution discrete"
+    );
     refused("members 5; seed 1; parameters { }", "no parameters");
 }
 

@@ -132,6 +132,14 @@ void Foam::ensembleSample::readParameters()
         }
         else
         {
+            if (!distribution->nValues())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "parameter " << e.keyword() << " has scenarios but"
+                    << " distribution " << dict.get<word>("distribution")
+                    << "; allowed: distribution discrete with scenarios"
+                    << exit(FatalIOError);
+            }
             for (const entry& scenario : dict.subDict("scenarios"))
             {
                 if (!scenario.isDict())
