@@ -95,6 +95,72 @@ Foam::ensembleSample::samplingType Foam::ensembleSample::readSampling
 }
 
 
+void Foam::ensembleSample::checkScenarios
+(
+    const word& name,
+    const dictionary& dict,
+    const parameterDistribution& distribution
+) const
+{
+    if (!distribution.nValues())
+    {
+        FatalIOErrorInFunction(dict)
+            << "parameter " << name << " has scenarios but"
+            << " distribution " << dict.get<word>("distribution")
+            << "; allowed: distribution discrete with scenarios"
+            << exit(FatalIOError);
+    }
+    for (const entry& scenario : dict.subDict("scenarios"))
+    {
+        if (!scenario.isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "scenario " << scenario.keyword() << " is not a"
+                << " dictionary; allowed: scenarios { <name> {"
+                << " \"<file>/<dictionary path>\" <value>; ... } }"
+                << exit(FatalIOError);
+        }
+        std::vector<std::string> paths;
+        valuePaths(scenario.dict(), "", paths);
+        if (paths.empty())
+        {
+            FatalIOErrorInFunction(scenario.dict())
+                << "scenario " << scenario.keyword() << " sets no"
+                << " entry; allowed: \"<file>/<dictionary path>\""
+                << " <value>; ..." << exit(FatalIOError);
+        }
+        for (const std::string& path : paths)
+        {
+            checkEntryPath
+            (
+                scenario.dict(), scenario.keyword(), path, caseDir_
+            );
+        }
+    }
+}
+
+
+Foam::label Foam::ensembleSample::readLevels
+(
+    const dictionary& dict,
+    const parameterDistribution& distribution
+) const
+{
+    label levels = distribution.nValues();
+    if (!levels)
+    {
+        levels = dict.get<label>("levels");
+        if (levels < 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "levels = " << levels << " is invalid; allowed:"
+                << " levels >= 1" << exit(FatalIOError);
+        }
+    }
+    return levels;
+}
+
+
 void Foam::ensembleSample::readParameters()
 {
     const dictionary& parameters = dict_.subDict("parameters");
@@ -132,58 +198,13 @@ void Foam::ensembleSample::readParameters()
         }
         else
         {
-            if (!distribution->nValues())
-            {
-                FatalIOErrorInFunction(dict)
-                    << "parameter " << e.keyword() << " has scenarios but"
-                    << " distribution " << dict.get<word>("distribution")
-                    << "; allowed: distribution discrete with scenarios"
-                    << exit(FatalIOError);
-            }
-            for (const entry& scenario : dict.subDict("scenarios"))
-            {
-                if (!scenario.isDict())
-                {
-                    FatalIOErrorInFunction(dict)
-                        << "scenario " << scenario.keyword() << " is not a"
-                        << " dictionary; allowed: scenarios { <name> {"
-                        << " \"<file>/<dictionary path>\" <value>; ... } }"
-                        << exit(FatalIOError);
-                }
-                std::vector<std::string> paths;
-                valuePaths(scenario.dict(), "", paths);
-                if (paths.empty())
-                {
-                    FatalIOErrorInFunction(scenario.dict())
-                        << "scenario " << scenario.keyword() << " sets no"
-                        << " entry; allowed: \"<file>/<dictionary path>\""
-                        << " <value>; ..." << exit(FatalIOError);
-                }
-                for (const std::string& path : paths)
-                {
-                    checkEntryPath
-                    (
-                        scenario.dict(), scenario.keyword(), path, caseDir_
-                    );
-                }
-            }
+            checkScenarios(e.keyword(), dict, *distribution);
         }
 
-        label levels = 0;
-        if (sampling_ == samplingType::fullFactorial)
-        {
-            levels = distribution->nValues();
-            if (!levels)
-            {
-                levels = dict.get<label>("levels");
-                if (levels < 1)
-                {
-                    FatalIOErrorInFunction(dict)
-                        << "levels = " << levels << " is invalid; allowed:"
-                        << " levels >= 1" << exit(FatalIOError);
-                }
-            }
-        }
+        const label levels =
+            sampling_ == samplingType::fullFactorial
+          ? readLevels(dict, *distribution)
+          : 0;
 
         names_.append(e.keyword());
         distributions_.append(distribution.ptr());
