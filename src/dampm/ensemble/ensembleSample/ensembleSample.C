@@ -1,0 +1,467 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "ensembleSample.H"
+#include "samplingDesign.H"
+#include "knownKeywords.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::ensembleSample::samplingType>
+Foam::ensembleSample::samplingTypeNames
+({
+    {samplingType::latinHypercube, "latinHypercube"},
+    {samplingType::monteCarlo, "monteCarlo"},
+    {samplingType::fullFactorial, "fullFactorial"},
+});
+
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The parts of a path between its slashes
+std::vector<std::string> pathParts(const std::string& path)
+{
+    std::vector<std::string> parts;
+    std::istringstream is(path);
+    std::string part;
+    while (std::getline(is, part, '/'))
+    {
+        if (!part.empty())
+        {
+            parts.push_back(part);
+        }
+    }
+    return parts;
+}
+
+
+//- The paths of the values in dict ("a/b/c" for a { b { c 1; } }), as
+//  OpenFOAM reads a quoted keyword "a/b/c": into nested dictionaries
+void valuePaths
+(
+    const Foam::dictionary& dict,
+    const std::string& prefix,
+    std::vector<std::string>& paths
+)
+{
+    for (const Foam::entry& e : dict)
+    {
+        const std::string path = prefix + e.keyword();
+        if (e.isDict())
+        {
+            valuePaths(e.dict(), path + "/", paths);
+        }
+        else
+        {
+            paths.push_back(path);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::ensembleSample::samplingType Foam::ensembleSample::readSampling
+(
+    const dictionary& dict
+)
+{
+    const word name(dict.getOrDefault<word>("sampling", "latinHypercube"));
+    if (!samplingTypeNames.found(name))
+    {
+        FatalIOErrorInFunction(dict)
+            << "sampling " << name << " is invalid; allowed: sampling "
+            << samplingTypeNames.sortedToc() << exit(FatalIOError);
+    }
+    return samplingTypeNames[name];
+}
+
+
+void Foam::ensembleSample::checkScenarios
+(
+    const word& name,
+    const dictionary& dict,
+    const parameterDistribution& distribution
+) const
+{
+    if (!distribution.nValues())
+    {
+        FatalIOErrorInFunction(dict)
+            << "parameter " << name << " has scenarios but"
+            << " distribution " << dict.get<word>("distribution")
+            << "; allowed: distribution discrete with scenarios"
+            << exit(FatalIOError);
+    }
+    for (const entry& scenario : dict.subDict("scenarios"))
+    {
+        if (!scenario.isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "scenario " << scenario.keyword() << " is not a"
+                << " dictionary; allowed: scenarios { <name> {"
+                << " \"<file>/<dictionary path>\" <value>; ... } }"
+                << exit(FatalIOError);
+        }
+        std::vector<std::string> paths;
+        valuePaths(scenario.dict(), "", paths);
+        if (paths.empty())
+        {
+            FatalIOErrorInFunction(scenario.dict())
+                << "scenario " << scenario.keyword() << " sets no"
+                << " entry; allowed: \"<file>/<dictionary path>\""
+                << " <value>; ..." << exit(FatalIOError);
+        }
+        for (const std::string& path : paths)
+        {
+            checkEntryPath
+            (
+                scenario.dict(), scenario.keyword(), path, caseDir_
+            );
+        }
+    }
+}
+
+
+Foam::label Foam::ensembleSample::readLevels
+(
+    const dictionary& dict,
+    const parameterDistribution& distribution
+) const
+{
+    label levels = distribution.nValues();
+    if (!levels)
+    {
+        levels = dict.get<label>("levels");
+        if (levels < 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "levels = " << levels << " is invalid; allowed:"
+                << " levels >= 1" << exit(FatalIOError);
+        }
+    }
+    return levels;
+}
+
+
+void Foam::ensembleSample::readParameters()
+{
+    const dictionary& parameters = dict_.subDict("parameters");
+    for (const entry& e : parameters)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(parameters)
+                << e.keyword() << " is not a dictionary; allowed: one"
+                << " sub-dictionary per parameter" << exit(FatalIOError);
+        }
+        const dictionary& dict = e.dict();
+        knownKeywords::add(dict, {"entry", "levels"});
+
+        if (dict.found("entry") == dict.found("scenarios"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "parameter " << e.keyword() << " needs either entry or"
+                << " scenarios; allowed: entry \"<file>/<dictionary path>\";"
+                << " or distribution discrete with scenarios { <name> {"
+                << " \"<file>/<dictionary path>\" <value>; ... } ... }"
+                << exit(FatalIOError);
+        }
+
+        autoPtr<parameterDistribution> distribution
+        (
+            parameterDistribution::New(dict)
+        );
+        if (dict.found("entry"))
+        {
+            checkEntryPath
+            (
+                dict, "entry", dict.get<string>("entry"), caseDir_
+            );
+        }
+        else
+        {
+            checkScenarios(e.keyword(), dict, *distribution);
+        }
+
+        const label levels =
+            sampling_ == samplingType::fullFactorial
+          ? readLevels(dict, *distribution)
+          : 0;
+
+        names_.append(e.keyword());
+        distributions_.append(distribution.ptr());
+        levels_.append(levels);
+    }
+    if (names_.empty())
+    {
+        FatalIOErrorInFunction(parameters)
+            << "no parameters; allowed: at least one sub-dictionary"
+            << " <name> { entry ...; distribution ...; }"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::label Foam::ensembleSample::readMembers() const
+{
+    knownKeywords::add(dict_, {"members"});
+
+    if (sampling_ != samplingType::fullFactorial)
+    {
+        const label n = dict_.get<label>("members");
+        if (n < 1 || n > maxMembers)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "members = " << n << " is invalid; allowed: 1 <= members"
+                << " <= " << maxMembers << exit(FatalIOError);
+        }
+        return n;
+    }
+
+    // The product in double: no overflow before the check
+    double product = 1;
+    for (const label n : levels_)
+    {
+        product *= n;
+    }
+    if (product > maxMembers)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "the full factorial's levels " << levels_ << " make " << product
+            << " members; allowed: at most " << maxMembers
+            << exit(FatalIOError);
+    }
+    const label n = label(product);
+    if (dict_.found("members") && dict_.get<label>("members") != n)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "members = " << dict_.get<label>("members") << " but the"
+            << " full factorial's levels " << levels_ << " make " << n
+            << " members; allowed: members " << n << ", or no members"
+            << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+void Foam::ensembleSample::sample()
+{
+    const label nParameters = names_.size();
+    values_.assign(nParameters, std::vector<double>(nMembers_));
+
+    if (sampling_ == samplingType::fullFactorial)
+    {
+        const std::vector<labelList> index
+        (
+            samplingDesign::fullFactorial(levels_)
+        );
+        for (label parami = 0; parami < nParameters; ++parami)
+        {
+            for (label memberi = 0; memberi < nMembers_; ++memberi)
+            {
+                values_[parami][memberi] = distributions_[parami].level
+                (
+                    index[parami][memberi], levels_[parami]
+                );
+            }
+        }
+        return;
+    }
+
+    knownKeywords::add(dict_, {"seed"});
+    const label seed = dict_.get<label>("seed");
+    if (seed < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "seed = " << seed << " is invalid; allowed: an integer"
+            << " 0 <= seed <= " << labelMax << exit(FatalIOError);
+    }
+    std::mt19937_64 rng(seed);
+    const samplingDesign::probabilities u
+    (
+        sampling_ == samplingType::latinHypercube
+      ? samplingDesign::latinHypercube(rng, nParameters, nMembers_)
+      : samplingDesign::monteCarlo(rng, nParameters, nMembers_)
+    );
+    for (label parami = 0; parami < nParameters; ++parami)
+    {
+        for (label memberi = 0; memberi < nMembers_; ++memberi)
+        {
+            values_[parami][memberi] =
+                distributions_[parami].value(u[parami][memberi]);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::ensembleSample::ensembleSample
+(
+    const dictionary& ensembleDict,
+    const fileName& caseDir
+)
+:
+    dict_(ensembleDict),
+    caseDir_(caseDir),
+    sampling_(readSampling(ensembleDict)),
+    nMembers_(0)
+{
+    knownKeywords::add(dict_, {"sampling", "parameters"});
+    readParameters();
+    nMembers_ = readMembers();
+    sample();
+}
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::ensembleSample::checkEntryPath
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& path,
+    const fileName& caseDir
+)
+{
+    const std::vector<std::string> parts(pathParts(path));
+
+    // The file: the longest leading part of the path that is a file
+    size_t nFile = parts.size();
+    fileName file;
+    for (; nFile > 0; --nFile)
+    {
+        file = caseDir;
+        for (size_t i = 0; i < nFile; ++i)
+        {
+            file = file/parts[i];
+        }
+        if (isFile(file))
+        {
+            break;
+        }
+    }
+    const std::string example =
+        "; allowed: \"<file>/<dictionary path>\" of an existing entry, e.g."
+        " \"constant/dampmProperties/VoellmyCoeffs/xi\"";
+    if (nFile == 0 || nFile == parts.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << keyword << " \"" << path.c_str() << "\": "
+            << (nFile ? "names a file, not an entry in it" : "no leading part"
+                " of it is a file of the case " + caseDir).c_str()
+            << example.c_str() << exit(FatalIOError);
+    }
+
+    IFstream is(file);
+    const dictionary fileDict(is);
+    const dictionary* scope = &fileDict;
+    std::string where = file.relative(caseDir);
+    for (size_t i = nFile; i < parts.size(); ++i)
+    {
+        const word part(parts[i]);
+        const entry* ePtr = scope->findEntry(part, keyType::LITERAL);
+        const bool last = i + 1 == parts.size();
+        if (!ePtr || ePtr->isDict() == last)
+        {
+            FatalIOErrorInFunction(dict)
+                << keyword << " \"" << path.c_str() << "\": " << where.c_str()
+                << (ePtr ? " has the dictionary " : " has no ") << part
+                << (ePtr ? ", not a value" : "") << " (it has "
+                << scope->toc() << ")" << example.c_str()
+                << exit(FatalIOError);
+        }
+        if (!last)
+        {
+            scope = &ePtr->dict();
+            where += "/" + part;
+        }
+    }
+}
+
+
+Foam::word Foam::ensembleSample::memberName
+(
+    const label memberi,
+    const label nMembers
+)
+{
+    const int width = std::max<int>(4, std::to_string(nMembers - 1).size());
+    std::ostringstream os;
+    os << std::setw(width) << std::setfill('0') << memberi;
+    return os.str();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::ensembleSample::write(const fileName& file) const
+{
+    mkDir(file.path());
+    std::ofstream os(file);
+    os << "member";
+    for (const word& name : names_)
+    {
+        os << ',' << name;
+    }
+    os << '\n' << std::setprecision(17);
+    for (label memberi = 0; memberi < nMembers_; ++memberi)
+    {
+        os << memberName(memberi, nMembers_);
+        for (const std::vector<double>& v : values_)
+        {
+            os << ',' << v[memberi];
+        }
+        os << '\n';
+    }
+    if (!os)
+    {
+        FatalErrorInFunction
+            << "could not write " << file << exit(FatalError);
+    }
+}
+
+
+void Foam::ensembleSample::report(Ostream& os) const
+{
+    os  << samplingTypeNames[sampling_] << " sample of " << nMembers_
+        << " members" << nl
+        << "parameter            min              mean             max" << nl;
+    forAll(names_, parami)
+    {
+        const std::vector<double>& v = values_[parami];
+        double sum = 0;
+        for (const double x : v)
+        {
+            sum += x;
+        }
+        std::ostringstream line;
+        line<< std::left << std::setw(20) << names_[parami] << ' '
+            << std::setprecision(8)
+            << std::setw(16) << *std::min_element(v.begin(), v.end()) << ' '
+            << std::setw(16) << sum/v.size() << ' '
+            << *std::max_element(v.begin(), v.end());
+        os  << line.str().c_str() << nl;
+    }
+}
+
+
+// ************************************************************************* //
