@@ -13,6 +13,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "hazardMaps.H"
 #include "topographyModel.H"
 #include "terrainRaster.H"
@@ -34,7 +35,7 @@ constexpr double ascTol = 1e-12;
 
 TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
 {
-    const fileName dir = fileName(DAMPM_TEST_MESHES).path()/"hazardMapsCase";
+    const fileName dir = scratchDir("hazardMapsCase");
     rmDir(dir);
     mkDir(dir/"constant");
     cp(testCase::meshDir("box2D")/"system", dir);

@@ -18,6 +18,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "ensembleSample.H"
 #include "testCase.H"
 #include "IStringStream.H"
@@ -36,7 +37,7 @@ namespace
 //- A case with the dictionary entries the parameters name
 fileName ensembleCase()
 {
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"ensembleCase");
+    const fileName dir(scratchDir("ensembleCase"));
     mkDir(dir/"constant");
     mkDir(dir/"system");
     std::ofstream os(dir/"constant"/"dampmProperties");

@@ -17,6 +17,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "STLcheck.H"
 #include "stlText.H"
 #include "OSspecific.H"
@@ -78,7 +79,7 @@ std::string binary
 //  file was read while another test rewrote it
 STLcheck checked(const std::string& bytes)
 {
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"STLcheck");
+    const fileName dir(scratchDir("STLcheck"));
     mkDir(dir);
     const fileName path(dir/("surface" + Foam::name(pid()) + ".stl"));
     std::ofstream(path, std::ios::binary) << bytes;

@@ -15,6 +15,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "fpTrapsHeld.H"
 #include "strictIOdictionary.H"
 #include "IFstream.H"
@@ -33,7 +34,7 @@ namespace
 std::string readError(const std::string& text, dictionary& dict)
 {
     // From a file, as the solvers read them (its line numbers)
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"inputTest");
+    const fileName dir(scratchDir("inputTest"));
     mkDir(dir);
     std::ofstream(dir/"dict") << text;
     try

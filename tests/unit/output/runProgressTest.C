@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "runProgress.H"
 #include "mpmTimeControls.H"
 #include "testCase.H"
@@ -30,7 +31,7 @@ namespace
 //  and the extra entries given
 fileName controlCase(const word& name, const std::string& entries)
 {
-    const fileName dir = fileName(DAMPM_TEST_MESHES).path()/name;
+    const fileName dir = scratchDir(name);
     rmDir(dir);
     mkDir(dir/"system");
     std::ofstream((dir/"system"/"controlDict").c_str())

@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "particleCloudIO.H"
 #include "testCase.H"
 #include "OSspecific.H"
@@ -33,7 +34,7 @@ constexpr double vtkTol = 1e-5;
 // A copy of the box2D test mesh in a fresh case folder
 fileName freshCase(const word& name)
 {
-    const fileName dir = fileName(DAMPM_TEST_MESHES).path()/name;
+    const fileName dir = scratchDir(name);
     rmDir(dir);
     mkDir(dir);
     cp(testCase::meshDir("box2D")/"system", dir);

@@ -20,6 +20,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "uniformGrid.H"
 #include "releaseModel.H"
 #include "OSspecific.H"
@@ -119,7 +120,7 @@ std::string refusal(const std::string& text)
 TEST(releaseModel, RasterBlockInNoDataReleasesTheBlockVolumeExactly)
 {
     const solverFpTraps traps;
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"releaseModel");
+    const fileName dir(scratchDir("releaseModel"));
     mkDir(dir);
     // 12 x 12 cells of 1 m from (0 0): a 2 m block of 4 x 3 cells, NODATA
     // and NaN around it; the raster covers part of the mesh

@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "structureTestTools.H"
 #include "errorsThrown.H"
 #include "OSspecific.H"
@@ -178,7 +179,7 @@ TEST(flexibleStructure, SameResultOnOneAndTwoThreads)
 TEST(flexibleStructure, STLAndPanelGiveTheSameMembrane)
 {
     // Two triangles of the unit square, as an ASCII STL
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"structureTest");
+    const fileName dir(scratchDir("structureTest"));
     mkDir(dir);
     std::ofstream(dir/"square.stl")
         << "solid square\n"

@@ -14,6 +14,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "structureTestTools.H"
 #include "errorsThrown.H"
 #include "exactPrecision.H"
@@ -56,7 +57,7 @@ public:
 //- The state written to file as the solvers write theirs, read back
 dictionary throughFile(const dictionary& state, const word& name)
 {
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"structureState");
+    const fileName dir(scratchDir("structureState"));
     mkDir(dir);
     {
         // A stream takes its precision when it opens

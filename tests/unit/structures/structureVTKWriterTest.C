@@ -16,6 +16,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "structureTestTools.H"
 #include "structureVTKWriter.H"
 #include "OSspecific.H"
@@ -126,7 +127,7 @@ std::vector<std::pair<std::string, double>> seriesOf(const fileName& file)
 //- A fresh case folder for the writer
 fileName caseDir(const word& name)
 {
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/name);
+    const fileName dir(scratchDir(name));
     if (isDir(dir))
     {
         rmDir(dir);

@@ -22,6 +22,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "terrainRaster.H"
 #include "fpTrapsHeld.H"
 #include "OSspecific.H"
@@ -62,7 +63,7 @@ double planar(const double X, const double Y)
 //- Folder for the test files, beside the test meshes in the build folder
 fileName testDir()
 {
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"terrainRaster");
+    const fileName dir(scratchDir("terrainRaster"));
     mkDir(dir);
     return dir;
 }

@@ -19,6 +19,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "scratchDir.H"
 #include "topographyModel.H"
 #include "OSspecific.H"
 #include "testCase.H"
@@ -162,7 +163,7 @@ TEST(topographyModel, RasterMustCoverTheGridToHalfARasterCell)
 {
     const solverFpTraps traps;
     const gridGeometry g(grid());
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"topographyModel");
+    const fileName dir(scratchDir("topographyModel"));
     mkDir(dir);
 
     // 2 m cells from map (1000 5000); local origin at the lower-left corner
@@ -241,7 +242,7 @@ TEST(topographyModel, GradientIsExactForEachModel)
     // A raster of the plane Z = 1 + 0.5 x + 0.25 y (local; 2 m cells from
     // map (1000 5000)): its bilinear interpolant is the plane inside, and
     // constant across the edge outside it
-    const fileName dir(fileName(DAMPM_TEST_MESHES).path()/"topographyModel");
+    const fileName dir(scratchDir("topographyModel"));
     mkDir(dir);
     {
         std::ofstream os(dir/"plane.asc");
