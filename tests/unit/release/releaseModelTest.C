@@ -14,7 +14,8 @@ Description
     its areas' volumes, also when the lattice outside is coarsened; an
     expression's NaN or inf is refused naming the column (not clamped to
     zero); a release wholly outside the mesh, or with nothing inside it, is
-    refused naming both extents. A polygon (non-convex, either
+    refused naming both extents. thicknessScale scales the kept and lost
+    volumes and must be positive. A polygon (non-convex, either
     orientation) releases its area times the thickness exactly, or fills
     to its surface level over a sloping bed.
 
@@ -190,6 +191,36 @@ TEST(releaseModel, BoxBeyondTheMeshKeepsAndLosesItsAreasVolumes)
         ),
         -1
     );
+}
+
+
+TEST(releaseModel, ThicknessScaleScalesKeptAndLostVolumesExactly)
+{
+    const solverFpTraps traps;
+    const gridGeometry g(grid());
+    const std::string box =
+        "type box; min (15 -5); max (25 10); thickness 2;";
+    label nColumns, nScaled;
+    const scalar scaled =
+        keptVolume(box + " thicknessScale 0.75;", nScaled);
+    EXPECT_EQ(scaled, 0.75*keptVolume(box, nColumns));
+    EXPECT_EQ(nScaled, nColumns);
+
+    label stride, nNotFinite;
+    EXPECT_EQ
+    (
+        testRelease(box + " thicknessScale 0.75;")().volumeOutside
+        (
+            g, nPerCell, stride, nNotFinite
+        ),
+        0.75*2.0*(10*15 - 5*10)
+    );
+
+    const std::string refused = refusal(box + " thicknessScale 0;");
+    EXPECT_NE(refused.find("thicknessScale = 0 is invalid"), std::string::npos)
+        << refused;
+    EXPECT_NE(refused.find("thicknessScale > 0"), std::string::npos)
+        << refused;
 }
 
 

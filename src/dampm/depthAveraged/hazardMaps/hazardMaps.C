@@ -13,6 +13,12 @@ License
 #include "OSspecific.H"
 #include "mpmTime.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::word Foam::hazardMaps::names[hazardMaps::nMaps] =
+    {"maxHeight", "maxSpeed", "maxIntensity", "maxDischarge"};
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::hazardMaps::readMaximum
@@ -114,19 +120,18 @@ Foam::hazardMaps::hazardMaps
     Gx_.assign(n, 0.0);
     Gy_.assign(n, 0.0);
     nodeTerrainGradient(g, Znodes, Gx_.data(), Gy_.data());
-    maxHeight_.assign(n, 0.0);
-    maxSpeed_.assign(n, 0.0);
-    maxIntensity_.assign(n, 0.0);
-    readMaximum("maxHeight", maxHeight_);
-    readMaximum("maxSpeed", maxSpeed_);
-    readMaximum("maxIntensity", maxIntensity_);
-
     const fvMesh& mesh = grid.mesh();
-    const word names[3] = {"maxHeight", "maxSpeed", "maxIntensity"};
-    const dimensionSet dims[3] =
-        {dimLength, dimVelocity, dimLength*dimVelocity*dimVelocity};
-    for (int k = 0; k < 3; ++k)
+    const dimensionSet dims[nMaps] =
     {
+        dimLength,
+        dimVelocity,
+        dimLength*dimVelocity*dimVelocity,
+        dimLength*dimVelocity
+    };
+    for (int k = 0; k < nMaps; ++k)
+    {
+        maxima_[k].assign(n, 0.0);
+        readMaximum(names[k], maxima_[k]);
         fields_[k].reset
         (
             new exactPrecisionIO<pointScalarField>
@@ -155,6 +160,10 @@ void Foam::hazardMaps::update
     const nodeBox& active
 )
 {
+    double* maxHeight = maxima_[0].data();
+    double* maxSpeed = maxima_[1].data();
+    double* maxIntensity = maxima_[2].data();
+    double* maxDischarge = maxima_[3].data();
     grid_.geometry().forEachNodeRow
     (
         active,
@@ -166,9 +175,11 @@ void Foam::hazardMaps::update
                 const double w = Gx_[i]*nodes.vx[i] + Gy_[i]*nodes.vy[i];
                 const double v2 = nodes.vx[i]*nodes.vx[i]
                   + nodes.vy[i]*nodes.vy[i] + w*w;
-                maxHeight_[i] = max(maxHeight_[i], h);
-                maxSpeed_[i] = max(maxSpeed_[i], std::sqrt(v2));
-                maxIntensity_[i] = max(maxIntensity_[i], h*v2);
+                const double v = std::sqrt(v2);
+                maxHeight[i] = max(maxHeight[i], h);
+                maxSpeed[i] = max(maxSpeed[i], v);
+                maxIntensity[i] = max(maxIntensity[i], h*v2);
+                maxDischarge[i] = max(maxDischarge[i], h*v);
             }
         }
     );
@@ -177,11 +188,9 @@ void Foam::hazardMaps::update
 
 void Foam::hazardMaps::write()
 {
-    const std::vector<double>* maxima[3] =
-        {&maxHeight_, &maxSpeed_, &maxIntensity_};
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < nMaps; ++k)
     {
-        grid_.nodeToPoint(maxima[k]->data(), fields_[k]->primitiveFieldRef());
+        grid_.nodeToPoint(maxima_[k].data(), fields_[k]->primitiveFieldRef());
     }
 
     const Time& runTime = grid_.mesh().time();
@@ -195,40 +204,35 @@ void Foam::hazardMaps::write()
 void Foam::hazardMaps::writeRasters(const fileName& dir) const
 {
     mkDir(dir);
-    writeRaster(dir, "maxHeight", maxHeight_);
-    writeRaster(dir, "maxSpeed", maxSpeed_);
-    writeRaster(dir, "maxIntensity", maxIntensity_);
+    for (int k = 0; k < nMaps; ++k)
+    {
+        writeRaster(dir, names[k], maxima_[k]);
+    }
 }
 
 
 void Foam::hazardMaps::saveMaxima(dictionary& dict) const
 {
-    dict.set("maxHeight", scalarList(maxHeight_.begin(), maxHeight_.end()));
-    dict.set("maxSpeed", scalarList(maxSpeed_.begin(), maxSpeed_.end()));
-    dict.set
-    (
-        "maxIntensity",
-        scalarList(maxIntensity_.begin(), maxIntensity_.end())
-    );
+    for (int k = 0; k < nMaps; ++k)
+    {
+        dict.set(names[k], scalarList(maxima_[k].begin(), maxima_[k].end()));
+    }
 }
 
 
 void Foam::hazardMaps::loadMaxima(const dictionary& dict)
 {
-    std::vector<double>* maxima[3] =
-        {&maxHeight_, &maxSpeed_, &maxIntensity_};
-    const word names[3] = {"maxHeight", "maxSpeed", "maxIntensity"};
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < nMaps; ++k)
     {
         const scalarList values(dict.get<scalarList>(names[k]));
-        if (values.size() != label(maxima[k]->size()))
+        if (values.size() != label(maxima_[k].size()))
         {
             FatalIOErrorInFunction(dict)
                 << names[k] << " has " << values.size() << " values; the"
-                << " run-out grid has " << maxima[k]->size() << " nodes"
+                << " run-out grid has " << maxima_[k].size() << " nodes"
                 << exit(FatalIOError);
         }
-        std::copy(values.begin(), values.end(), maxima[k]->begin());
+        std::copy(values.begin(), values.end(), maxima_[k].begin());
     }
 }
 

@@ -12,6 +12,7 @@ License
 #include "speedLimit.H"
 #include "knownKeywords.H"
 #include "fpTrapsHeld.H"
+#include "boundedScalar.H"
 #include "OStringStream.H"
 #include "IOmanip.H"
 #include <algorithm>
@@ -38,9 +39,19 @@ Foam::releaseModel::releaseModel
     dict_(dict),
     topography_(topography),
     caseDir_(caseDir),
-    U_(speedLimit::readVelocity(dict, vector2D::zero))
+    U_(speedLimit::readVelocity(dict, vector2D::zero)),
+    thicknessScale_
+    (
+        boundedScalar
+        (
+            dict,
+            "thicknessScale",
+            dict.getOrDefault<scalar>("thicknessScale", 1),
+            scalarBound::positive
+        )
+    )
 {
-    knownKeywords::add(dict, {"U"});
+    knownKeywords::add(dict, {"U", "thicknessScale"});
 }
 
 
@@ -108,7 +119,7 @@ void Foam::releaseModel::sampleColumns
             for (label i = 0; i < g.nCells[0]*n && !bad; ++i)
             {
                 const scalar xp = g.origin[0] + (i + 0.5)*g.dx[0]/n;
-                const scalar hp = height(xp, yp);
+                const scalar hp = thicknessScale_*height(xp, yp);
                 if (!(std::isfinite(hp) && hp >= 0 && hp <= maxHeight))
                 {
                     bad = true;
@@ -254,7 +265,7 @@ Foam::scalar Foam::releaseModel::volumeOutside
             {
                 continue;
             }
-            const scalar hp = height(xp, yp);
+            const scalar hp = thicknessScale_*height(xp, yp);
             if (std::isfinite(hp))
             {
                 volume += max(hp, scalar(0))*area;
