@@ -13,7 +13,11 @@ License
 #include "knownKeywords.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "exactPrecision.H"
+#include "primitiveEntry.H"
+#include "OStringStream.H"
 #include <algorithm>
+#include <charconv>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -51,13 +55,15 @@ std::vector<std::string> pathParts(const std::string& path)
 }
 
 
-//- The paths of the values in dict ("a/b/c" for a { b { c 1; } }), as
+//- The values in dict and their paths ("a/b/c" for a { b { c 1; } }), as
 //  OpenFOAM reads a quoted keyword "a/b/c": into nested dictionaries
-void valuePaths
+typedef std::vector<std::pair<std::string, const Foam::entry*>> valueList;
+
+void collectValues
 (
     const Foam::dictionary& dict,
     const std::string& prefix,
-    std::vector<std::string>& paths
+    valueList& values
 )
 {
     for (const Foam::entry& e : dict)
@@ -65,13 +71,33 @@ void valuePaths
         const std::string path = prefix + e.keyword();
         if (e.isDict())
         {
-            valuePaths(e.dict(), path + "/", paths);
+            collectValues(e.dict(), path + "/", values);
         }
         else
         {
-            paths.push_back(path);
+            values.emplace_back(path, &e);
         }
     }
+}
+
+
+//- The shortest text that reads back as x
+std::string exactText(const double x)
+{
+    char buffer[32];
+    const std::to_chars_result end =
+        std::to_chars(buffer, buffer + sizeof(buffer), x);
+    return std::string(buffer, end.ptr);
+}
+
+
+//- An entry's value as written, every number read back exactly
+std::string valueText(const Foam::entry& e)
+{
+    const Foam::exactPrecision digits;
+    Foam::OStringStream os;
+    Foam::dynamicCast<const Foam::primitiveEntry>(e).write(os, true);
+    return os.str();
 }
 
 } // End anonymous namespace
@@ -120,20 +146,20 @@ void Foam::ensembleSample::checkScenarios
                 << " \"<file>/<dictionary path>\" <value>; ... } }"
                 << exit(FatalIOError);
         }
-        std::vector<std::string> paths;
-        valuePaths(scenario.dict(), "", paths);
-        if (paths.empty())
+        valueList values;
+        collectValues(scenario.dict(), "", values);
+        if (values.empty())
         {
             FatalIOErrorInFunction(scenario.dict())
                 << "scenario " << scenario.keyword() << " sets no"
                 << " entry; allowed: \"<file>/<dictionary path>\""
                 << " <value>; ..." << exit(FatalIOError);
         }
-        for (const std::string& path : paths)
+        for (const auto& value : values)
         {
             checkEntryPath
             (
-                scenario.dict(), scenario.keyword(), path, caseDir_
+                scenario.dict(), scenario.keyword(), value.first, caseDir_
             );
         }
     }
@@ -334,19 +360,18 @@ Foam::ensembleSample::ensembleSample
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
-void Foam::ensembleSample::checkEntryPath
+Foam::label Foam::ensembleSample::splitEntryPath
 (
-    const dictionary& dict,
-    const word& keyword,
     const string& path,
-    const fileName& caseDir
+    const fileName& caseDir,
+    fileName& file,
+    wordList& keys
 )
 {
     const std::vector<std::string> parts(pathParts(path));
 
     // The file: the longest leading part of the path that is a file
     size_t nFile = parts.size();
-    fileName file;
     for (; nFile > 0; --nFile)
     {
         file = caseDir;
@@ -359,10 +384,30 @@ void Foam::ensembleSample::checkEntryPath
             break;
         }
     }
+    keys.clear();
+    for (size_t i = nFile; nFile && i < parts.size(); ++i)
+    {
+        keys.append(word(parts[i]));
+    }
+    return nFile;
+}
+
+
+void Foam::ensembleSample::checkEntryPath
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& path,
+    const fileName& caseDir
+)
+{
+    fileName file;
+    wordList keys;
+    const label nFile = splitEntryPath(path, caseDir, file, keys);
     const std::string example =
         "; allowed: \"<file>/<dictionary path>\" of an existing entry, e.g."
         " \"constant/dampmProperties/VoellmyCoeffs/xi\"";
-    if (nFile == 0 || nFile == parts.size())
+    if (keys.empty())
     {
         FatalIOErrorInFunction(dict)
             << keyword << " \"" << path.c_str() << "\": "
@@ -375,11 +420,11 @@ void Foam::ensembleSample::checkEntryPath
     const dictionary fileDict(is);
     const dictionary* scope = &fileDict;
     std::string where = file.relative(caseDir);
-    for (size_t i = nFile; i < parts.size(); ++i)
+    forAll(keys, i)
     {
-        const word part(parts[i]);
+        const word& part = keys[i];
         const entry* ePtr = scope->findEntry(part, keyType::LITERAL);
-        const bool last = i + 1 == parts.size();
+        const bool last = i + 1 == keys.size();
         if (!ePtr || ePtr->isDict() == last)
         {
             FatalIOErrorInFunction(dict)
@@ -413,10 +458,44 @@ Foam::word Foam::ensembleSample::memberName
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::ensembleSample::write(const fileName& file) const
+std::vector<Foam::ensembleSample::setting> Foam::ensembleSample::settings
+(
+    const label memberi
+) const
 {
-    mkDir(file.path());
-    std::ofstream os(file);
+    std::vector<setting> entries;
+    const dictionary& parameters = dict_.subDict("parameters");
+    forAll(names_, parami)
+    {
+        const dictionary& dict = parameters.subDict(names_[parami]);
+        const double value = values_[parami][memberi];
+        if (dict.found("entry"))
+        {
+            entries.push_back({dict.get<string>("entry"), exactText(value)});
+            continue;
+        }
+        const label scenarioi = label(value);
+        label i = 0;
+        for (const entry& scenario : dict.subDict("scenarios"))
+        {
+            if (i++ == scenarioi)
+            {
+                valueList values;
+                collectValues(scenario.dict(), "", values);
+                for (const auto& v : values)
+                {
+                    entries.push_back({v.first, valueText(*v.second)});
+                }
+            }
+        }
+    }
+    return entries;
+}
+
+
+std::string Foam::ensembleSample::csv() const
+{
+    std::ostringstream os;
     os << "member";
     for (const word& name : names_)
     {
@@ -432,6 +511,15 @@ void Foam::ensembleSample::write(const fileName& file) const
         }
         os << '\n';
     }
+    return os.str();
+}
+
+
+void Foam::ensembleSample::write(const fileName& file) const
+{
+    mkDir(file.path());
+    std::ofstream os(file);
+    os << csv();
     if (!os)
     {
         FatalErrorInFunction
