@@ -17,7 +17,6 @@ License
 #include "primitiveEntry.H"
 #include "OStringStream.H"
 #include <algorithm>
-#include <charconv>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -78,16 +77,6 @@ void collectValues
             values.emplace_back(path, &e);
         }
     }
-}
-
-
-//- The shortest text that reads back as x
-std::string exactText(const double x)
-{
-    char buffer[32];
-    const std::to_chars_result end =
-        std::to_chars(buffer, buffer + sizeof(buffer), x);
-    return std::string(buffer, end.ptr);
 }
 
 

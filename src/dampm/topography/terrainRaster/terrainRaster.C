@@ -13,11 +13,11 @@ License
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "exactPrecision.H"
 #include <gdal.h>
 #include <cpl_error.h>
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cstdint>
 #include <cmath>
 #include <cstdio>
@@ -158,15 +158,6 @@ bool sameKey(const std::string& a, const char* b)
 bool isCount(const double v)
 {
     return v >= 1 && v < 1e9 && v == std::floor(v);
-}
-
-
-//- Shortest text that reads back as v exactly
-std::string exactText(const double v)
-{
-    char buf[32];
-    const auto res = std::to_chars(buf, buf + sizeof(buf), v);
-    return std::string(buf, res.ptr);
 }
 
 
