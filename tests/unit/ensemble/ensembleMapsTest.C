@@ -22,6 +22,7 @@ Description
 #include "scratchDir.H"
 #include "ensembleMaps.H"
 #include "knownKeywords.H"
+#include "exactPrecision.H"
 #include "testCase.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
@@ -599,6 +600,14 @@ TEST(ensembleMaps, BadMapsInputIsRefusedNamingKeywordAndAllowedValues)
             << c.first << "\n" << text;
         EXPECT_NE(text.find("system/ensembleDict"), std::string::npos)
             << c.first << "\n" << text;
+    }
+
+    // The numbers as written, also when the streams write 17 digits
+    {
+        const exactPrecision digits;
+        const std::string text = refusal("maps { maxHeight (1 0.2); }");
+        EXPECT_NE(text.find("maxHeight holds 0.2 after 1;"), std::string::npos)
+            << text;
     }
 
     // Accepted: equal thresholds in successive classes, a field given in a

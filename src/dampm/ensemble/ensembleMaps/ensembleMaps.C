@@ -48,6 +48,14 @@ std::string fieldList()
 }
 
 
+//- A number of a message as written (shortest exact form), whatever the
+//  stream's precision
+word text(const scalar x)
+{
+    return ensembleMaps::numberName(x);
+}
+
+
 //- The maps sub-dictionary of ensembleDict, empty (and named so) when absent
 dictionary mapsDict(const dictionary& ensembleDict)
 {
@@ -79,14 +87,14 @@ void checkIncreasing
         if (!std::isfinite(values[i]) || !inRange(values[i]))
         {
             FatalIOErrorInFunction(dict)
-                << keyword << " holds " << values[i] << "; allowed: "
+                << keyword << " holds " << text(values[i]) << "; allowed: "
                 << allowed << exit(FatalIOError);
         }
         if (i && !(values[i] > values[i - 1]))
         {
             FatalIOErrorInFunction(dict)
-                << keyword << " holds " << values[i] << " after "
-                << values[i - 1] << "; allowed: " << allowed
+                << keyword << " holds " << text(values[i]) << " after "
+                << text(values[i - 1]) << "; allowed: " << allowed
                 << exit(FatalIOError);
         }
     }
@@ -258,7 +266,7 @@ Foam::scalarList Foam::ensembleMaps::readClass(const entry& e) const
         {
             FatalIOErrorInFunction(dict)
                 << "class " << e.keyword() << ": " << f.keyword() << " = "
-                << t[fieldi] << " is invalid; allowed: a threshold >= 0"
+                << text(t[fieldi]) << " is invalid; allowed: a threshold >= 0"
                 << exit(FatalIOError);
         }
     }
@@ -282,8 +290,8 @@ void Foam::ensembleMaps::checkClassOrder
             {
                 FatalIOErrorInFunction(e.dict())
                     << "class " << e.keyword() << ": " << fieldNames[fieldi]
-                    << " " << t[fieldi] << " is lower than class "
-                    << classNames_[classi] << "'s " << before
+                    << " " << text(t[fieldi]) << " is lower than class "
+                    << classNames_[classi] << "'s " << text(before)
                     << "; allowed: classes in increasing order, a field's"
                     << " threshold no lower than in the classes before"
                     << exit(FatalIOError);
@@ -495,7 +503,7 @@ void Foam::ensembleMaps::writeClassMaps
         reportProbability(os, name, P[classi], cellArea);
     }
     writeMap(geometry, classMap, outDir, "intensityClass");
-    os  << "    intensityClass (P >= " << classProbability_ << "):";
+    os  << "    intensityClass (P >= " << text(classProbability_) << "):";
     forAll(classNames_, classi)
     {
         const label n =
@@ -528,7 +536,7 @@ Foam::ensembleMaps::ensembleMaps(const dictionary& ensembleDict)
     if (!std::isfinite(reachHeight_) || !(reachHeight_ > 0))
     {
         FatalIOErrorInFunction(dict_)
-            << "reachHeight = " << reachHeight_ << " is invalid; allowed:"
+            << "reachHeight = " << text(reachHeight_) << " is invalid; allowed:"
             << " reachHeight > 0 [m]" << exit(FatalIOError);
     }
     readPercentiles();
@@ -548,8 +556,9 @@ Foam::ensembleMaps::ensembleMaps(const dictionary& ensembleDict)
     if (!(classProbability_ > 0 && classProbability_ <= 1))
     {
         FatalIOErrorInFunction(dict_)
-            << "classProbability = " << classProbability_ << " is invalid;"
-            << " allowed: 0 < classProbability <= 1" << exit(FatalIOError);
+            << "classProbability = " << text(classProbability_)
+            << " is invalid; allowed: 0 < classProbability <= 1"
+            << exit(FatalIOError);
     }
 }
 
