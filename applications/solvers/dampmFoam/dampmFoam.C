@@ -74,6 +74,10 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         timers.run(stepTimers::P2G, [&]{ flow.particlesToGrid(); });
+        timers.run(stepTimers::grid, [&]
+        {
+            hazard.update(flow.nodes(), flow.activeNodes());
+        });
 
         #include "setMPMDeltaT.H"
         #include "limitWriteDeltaT.H"
@@ -82,11 +86,7 @@ int main(int argc, char *argv[])
         ++runTime;
 
         timers.run(stepTimers::P2G, [&]{ flow.computeForces(); });
-        timers.run(stepTimers::grid, [&]
-        {
-            flow.updateGrid(dt);
-            hazard.update(flow.nodes(), flow.activeNodes());
-        });
+        timers.run(stepTimers::grid, [&]{ flow.updateGrid(dt); });
         timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
         timers.countStep(flow.particles().size());
 
