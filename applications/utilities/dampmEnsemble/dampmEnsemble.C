@@ -13,18 +13,28 @@ Group
     grpMPMUtilities
 
 Description
-    Draws the sample of an ensemble of runs of this case from
-    system/ensembleDict (doc/ensembles.md): checks every parameter (its
-    entries exist in the case's files, its distribution's coefficients,
-    the number of members), draws the values with the seed's random
-    numbers, writes them to ensemble/samples.csv (member,<name>,...; one
-    row per member) and prints each parameter's minimum, mean and maximum.
+    Runs an ensemble of this case (doc/ensembles.md): draws the sample of
+    system/ensembleDict and writes it to ensemble/samples.csv, makes each
+    member's case, ensemble/member.NNNN, runs the members jobs at a time on
+    this machine, and writes the ensemble's hazard maps to
+    ensemble/postProcessing/hazardMaps/ and a line per member to
+    ensemble/postProcessing/summary.csv.
+
+    Everything in ensembleDict is checked before any member runs. Run again,
+    it resumes: members done are not rerun, members stopped part way
+    continue from their last complete time; failed members are reported,
+    left out of the maps and not rerun unless -retryFailed.
 
     \verbatim
-        dampmEnsemble [-case dir]
+        dampmEnsemble [-case dir] [-jobs N] [-threads N] [-retryFailed]
+        dampmEnsemble -setup          # the sample and the members' cases
+        dampmEnsemble -member i       # run member i only (a job array's task)
+        dampmEnsemble -maps           # the maps and summary.csv only
     \endverbatim
 
-    It does not run the members yet: this is the sampling step.
+    Exit code 0 when every member is done and the maps are written; 1 when
+    members failed or are not done (the maps are written from those done);
+    128 + the signal when stopped by SIGINT or SIGTERM.
 
 \*---------------------------------------------------------------------------*/
 
@@ -32,46 +42,134 @@ Description
 #include "Time.H"
 #include "strictIOdictionary.H"
 #include "ensembleSample.H"
+#include "ensembleMember.H"
+#include "ensembleRunner.H"
+#include "ensembleMaps.H"
+#include "ensembleSummary.H"
 #include "knownKeywords.H"
+#include "OSspecific.H"
+#include <fstream>
+#include <sstream>
+#include <thread>
 
 using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+//- Write the sample to ensemble/samples.csv, or check that the one there is
+//  the same (the ensemble resumes only with the sample its members have)
+void writeOrCheckSample(const ensembleSample& sample, const fileName& csv)
+{
+    if (isFile(csv))
+    {
+        std::ifstream is(csv);
+        std::stringstream text;
+        text << is.rdbuf();
+        if (text.str() != sample.csv())
+        {
+            FatalErrorInFunction
+                << "ensemble/samples.csv holds another sample than"
+                << " system/ensembleDict"
+                << " draws now (the dictionary changed since its members"
+                << " were made): restore the dictionary to resume, or remove"
+                << " the folder ensemble/ for a new ensemble"
+                << exit(FatalError);
+        }
+        return;
+    }
+    sample.write(csv);
+    Info<< "Wrote ensemble/samples.csv" << nl;
+}
+
+
+//- A positive count from an option (default if absent)
+label positiveOption(const argList& args, const word& name, const label deflt)
+{
+    const label n = args.getOrDefault<label>(name, deflt);
+    if (n < 1)
+    {
+        FatalErrorInFunction
+            << "-" << name << ' ' << n << " is invalid; allowed: an integer"
+            << " >= 1" << exit(FatalError);
+    }
+    return n;
+}
+
+
+//- Should member run: not done, failed only when retrying
+bool toRun(const ensembleMember& member, const bool retryFailed)
+{
+    typedef ensembleMember::statusType statusType;
+    return
+        member.status() != statusType::done
+     && (retryFailed || member.status() != statusType::failed);
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Draw the sample of an ensemble of runs of this case from"
-        " system/ensembleDict and write it to ensemble/samples.csv"
+        "Run the ensemble of this case drawn from system/ensembleDict and"
+        " write its hazard maps (ensemble/)"
     );
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "setup", "draw the sample and make the members' cases, run nothing"
+    );
+    argList::addOption
+    (
+        "member", "i", "run member i only (0 for the first; a scheduler"
+        " job array's task), without the maps"
+    );
+    argList::addBoolOption
+    (
+        "maps", "write the maps and summary.csv from the members done, run"
+        " nothing"
+    );
+    argList::addOption
+    (
+        "jobs", "N", "members run at once (default: the cores over -threads)"
+    );
+    argList::addOption("threads", "N", "threads of each member (default 1)");
+    argList::addBoolOption("retryFailed", "run the failed members again");
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const strictIOdictionary ensembleDict
-    (
-        IOobject
+    #include "readEnsembleDict.H"
+
+    const fileName ensembleDir(runTime.path()/"ensemble");
+    writeOrCheckSample(sample, ensembleDir/"samples.csv");
+
+    PtrList<ensembleMember> members(sample.size());
+    forAll(members, memberi)
+    {
+        members.set
         (
-            "ensembleDict",
-            runTime.system(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
+            memberi,
+            new ensembleMember
+            (
+                runTime.path(),
+                ensembleSample::memberName(memberi, sample.size())
+            )
+        );
+    }
 
-    const ensembleSample sample(ensembleDict, runTime.path());
-    knownKeywords::warnUnknown(runTime.path());
+    const word application(runTime.controlDict().get<word>("application"));
+    const label single = args.getOrDefault<label>("member", -1);
+    if (!args.found("maps"))
+    {
+        #include "runMembers.H"
+    }
 
-    const fileName csv(runTime.path()/"ensemble"/"samples.csv");
-    sample.write(csv);
-    Info<< nl;
-    sample.report(Info);
-    Info<< nl << "Wrote " << csv.relative(runTime.path()).c_str() << nl
-        << nl << "End\n" << endl;
+    #include "writeEnsembleMaps.H"
 
-    return 0;
+    Info<< nl << "End\n" << endl;
+
+    // Not return: destroying argList ends the process with exit code 0
+    Pstream::exit(exitCode);
+    return exitCode;
 }
 
 

@@ -143,7 +143,10 @@ void Foam::ensembleMember::create
 ) const
 {
     const fileName tmp(dir_ + ".tmp");
-    rmDir(tmp);
+    if (isDir(tmp))
+    {
+        rmDir(tmp);
+    }
     mkDir(tmp);
     cp(baseCase_/"system", tmp);
     cp(baseCase_/"constant", tmp);

@@ -169,7 +169,7 @@ int Foam::ensembleRunner::run(UPtrList<ensembleMember>& members) const
         Info<< endl;
     };
 
-    while (next < members.size() || !running.empty())
+    while ((!stopSignal && next < members.size()) || !running.empty())
     {
         if (stopSignal && nForwarded < nSignals)
         {
