@@ -10,10 +10,10 @@ Description
     rankCorrelation on the probabilities of a design: Spearman's
     coefficient with ties against a hand count; the induced rank
     correlation near its target, on average over 100 seeds and for each,
-    and the other pairs near 0; each parameter keeps its probabilities (the same multiset), so
-    a Latin hypercube keeps one member per stratum; a sample of one member
-    more than parameters; no correlations leave the probabilities and the
-    generator untouched.
+    and the other pairs near 0; each parameter keeps its probabilities
+    (the same multiset), so a Latin hypercube keeps one member per
+    stratum; a sample of one member more than parameters; no correlations
+    leave the probabilities and the generator untouched.
 
 \*---------------------------------------------------------------------------*/
 

@@ -14,6 +14,7 @@ License
 #include "tokenList.H"
 #include "mathematicalConstants.H"
 #include "OStringStream.H"
+#include "exactPrecision.H"
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
@@ -29,14 +30,23 @@ const char* const pairForm =
     " and -1 < rho < 1, each pair once";
 
 
-//- An entry of correlations as written, on one line: (xi phi -0.6)
+//- An entry of correlations on one line, its numbers as written whatever
+//  the stream's precision: (xi phi -0.6)
 Foam::string entryText(const Foam::tokenList& entry)
 {
     Foam::OStringStream os;
     os  << '(';
     forAll(entry, i)
     {
-        os  << (i ? " " : "") << entry[i];
+        os  << (i ? " " : "");
+        if (entry[i].isNumber())
+        {
+            os  << Foam::exactText(entry[i].number()).c_str();
+        }
+        else
+        {
+            os  << entry[i];
+        }
     }
     os  << ')';
     return os.str();
@@ -111,9 +121,9 @@ Eigen::MatrixXd targetMatrix
 
 
 //- The lower Cholesky factor of a correlation matrix, false when it is not
-//  positive definite: a pivot below tol, the part of a column's variance
-//  that the previous columns do not explain (1 when independent), is
-//  linear dependence within round-off
+//  positive definite: a pivot, the root of the part of a column's variance
+//  that the previous columns do not explain (1 when independent), below
+//  tol is linear dependence within round-off
 bool cholesky(const Eigen::MatrixXd& c, Eigen::MatrixXd& l)
 {
     constexpr double tol = 1e-6;
@@ -179,7 +189,8 @@ void Foam::rankCorrelation::readPairs
         {
             FatalIOErrorInFunction(dict)
                 << "correlations entry " << entry.c_str() << ": rho = "
-                << p.rho << " is invalid" << pairForm << exit(FatalIOError);
+                << exactText(p.rho).c_str() << " is invalid" << pairForm
+                << exit(FatalIOError);
         }
         for (const pair& q : pairs_)
         {
@@ -207,7 +218,7 @@ void Foam::rankCorrelation::checkTarget(const dictionary& dict) const
             << " matrix (1 on the diagonal, 0 for the pairs not given);"
             << " allowed: correlations that the parameters can have"
             << " together, e.g. (a b 0.8) (b c 0.8) need (a c rho) with"
-            << " rho > 0.3" << exit(FatalIOError);
+            << " rho > 0.31" << exit(FatalIOError);
     }
 }
 
