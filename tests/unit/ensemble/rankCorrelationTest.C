@@ -18,6 +18,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "rankCorrelation.H"
+#include "oneMemberPerStratum.H"
 #include "IStringStream.H"
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -35,26 +36,6 @@ rankCorrelation correlationOf(const std::string& text, const label nMembers)
     IStringStream is(text);
     const wordList names({"a", "b", "c"});
     return rankCorrelation(dictionary(is), names, nMembers);
-}
-
-
-//- Each parameter's strata floor(u N): true if a permutation of 0..N-1
-bool oneMemberPerStratum(const samplingDesign::probabilities& u)
-{
-    for (const std::vector<double>& parameter : u)
-    {
-        const label n = parameter.size();
-        std::vector<label> count(n, 0);
-        for (const double p : parameter)
-        {
-            const label k = label(std::floor(p*n));
-            if (k < 0 || k >= n || ++count[k] != 1)
-            {
-                return false;
-            }
-        }
-    }
-    return true;
 }
 
 
