@@ -16,37 +16,13 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "samplingDesign.H"
+#include "oneMemberPerStratum.H"
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
 #include <set>
 
 using namespace Foam;
-
-namespace
-{
-
-//- Each parameter's strata floor(u N): true if a permutation of 0..N-1
-bool oneMemberPerStratum(const samplingDesign::probabilities& u)
-{
-    for (const std::vector<double>& parameter : u)
-    {
-        const label n = parameter.size();
-        std::vector<label> count(n, 0);
-        for (const double p : parameter)
-        {
-            const label k = label(std::floor(p*n));
-            if (k < 0 || k >= n || ++count[k] != 1)
-            {
-                return false;
-            }
-        }
-    }
-    return true;
-}
-
-} // End anonymous namespace
-
 
 TEST(samplingDesign, UnitUniformIsStrictlyInsideZeroOne)
 {

@@ -10,6 +10,7 @@ License
 
 #include "ensembleSample.H"
 #include "samplingDesign.H"
+#include "rankCorrelation.H"
 #include "knownKeywords.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -106,7 +107,16 @@ Foam::ensembleSample::samplingType Foam::ensembleSample::readSampling
             << "sampling " << name << " is invalid; allowed: sampling "
             << samplingTypeNames.sortedToc() << exit(FatalIOError);
     }
-    return samplingTypeNames[name];
+    const samplingType sampling = samplingTypeNames[name];
+    if (sampling == samplingType::fullFactorial && dict.found("correlations"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "correlations are not possible with sampling fullFactorial,"
+            << " which takes every combination of levels once; allowed:"
+            << " correlations with sampling latinHypercube or monteCarlo"
+            << exit(FatalIOError);
+    }
+    return sampling;
 }
 
 
@@ -309,13 +319,17 @@ void Foam::ensembleSample::sample()
             << "seed = " << seed << " is invalid; allowed: an integer"
             << " 0 <= seed <= " << labelMax << exit(FatalIOError);
     }
+    const rankCorrelation correlation(dict_, names_, nMembers_);
+    correlations_ = correlation.pairs();
+
     std::mt19937_64 rng(seed);
-    const samplingDesign::probabilities u
+    samplingDesign::probabilities u
     (
         sampling_ == samplingType::latinHypercube
       ? samplingDesign::latinHypercube(rng, nParameters, nMembers_)
       : samplingDesign::monteCarlo(rng, nParameters, nMembers_)
     );
+    correlation.induce(rng, u);
     for (label parami = 0; parami < nParameters; ++parami)
     {
         for (label memberi = 0; memberi < nMembers_; ++memberi)
@@ -536,6 +550,21 @@ void Foam::ensembleSample::report(Ostream& os) const
             << std::setw(16) << *std::min_element(v.begin(), v.end()) << ' '
             << std::setw(16) << sum/v.size() << ' '
             << *std::max_element(v.begin(), v.end());
+        os  << line.str().c_str() << nl;
+    }
+    if (correlations_.empty())
+    {
+        return;
+    }
+    os  << nl << "rank correlation                 target           sample"
+        << nl;
+    for (const rankCorrelation::pair& p : correlations_)
+    {
+        std::ostringstream line;
+        line<< std::left << std::setw(32)
+            << names_[p.a] + ' ' + names_[p.b] << ' '
+            << std::setprecision(8) << std::setw(16) << p.rho << ' '
+            << rankCorrelation::spearman(values_[p.a], values_[p.b]);
         os  << line.str().c_str() << nl;
     }
 }

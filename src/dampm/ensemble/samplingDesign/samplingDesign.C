@@ -38,6 +38,22 @@ std::uint64_t Foam::samplingDesign::uniformIndex
 }
 
 
+std::vector<Foam::label> Foam::samplingDesign::permutation
+(
+    std::mt19937_64& rng,
+    const label n
+)
+{
+    std::vector<label> p(n);
+    std::iota(p.begin(), p.end(), 0);
+    for (label i = n - 1; i > 0; --i)
+    {
+        std::swap(p[i], p[uniformIndex(rng, i + 1)]);
+    }
+    return p;
+}
+
+
 Foam::samplingDesign::probabilities Foam::samplingDesign::monteCarlo
 (
     std::mt19937_64& rng,
@@ -70,14 +86,9 @@ Foam::samplingDesign::probabilities Foam::samplingDesign::latinHypercube
     const double below1 = std::nextafter(1.0, 0.0);
 
     probabilities u(nParameters, std::vector<double>(nMembers));
-    std::vector<label> stratum(nMembers);
     for (std::vector<double>& parameter : u)
     {
-        std::iota(stratum.begin(), stratum.end(), 0);
-        for (label i = nMembers - 1; i > 0; --i)
-        {
-            std::swap(stratum[i], stratum[uniformIndex(rng, i + 1)]);
-        }
+        const std::vector<label> stratum(permutation(rng, nMembers));
         for (label memberi = 0; memberi < nMembers; ++memberi)
         {
             parameter[memberi] = std::min
