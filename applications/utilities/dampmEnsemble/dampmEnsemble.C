@@ -27,6 +27,7 @@ Description
 
     \verbatim
         dampmEnsemble [-case dir] [-jobs N] [-threads N] [-retryFailed]
+        dampmEnsemble -sample         # ensemble/samples.csv only
         dampmEnsemble -setup          # the sample and the members' cases
         dampmEnsemble -member i       # run member i only (a job array's task)
         dampmEnsemble -maps           # the maps and summary.csv only
@@ -116,6 +117,10 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addBoolOption
     (
+        "sample", "draw the sample and write ensemble/samples.csv only"
+    );
+    argList::addBoolOption
+    (
         "setup", "draw the sample and make the members' cases, run nothing"
     );
     argList::addOption
@@ -139,8 +144,17 @@ int main(int argc, char *argv[])
 
     #include "readEnsembleDict.H"
 
+    const bool runs = !args.found("sample") && !args.found("maps");
+    const label single = args.getOrDefault<label>("member", -1);
+    #include "checkRunOptions.H"
+
     const fileName ensembleDir(runTime.path()/"ensemble");
     writeOrCheckSample(sample, ensembleDir/"samples.csv");
+    if (args.found("sample"))
+    {
+        Info<< nl << "End\n" << endl;
+        return 0;
+    }
 
     PtrList<ensembleMember> members(sample.size());
     forAll(members, memberi)
@@ -157,8 +171,7 @@ int main(int argc, char *argv[])
     }
 
     const word application(runTime.controlDict().get<word>("application"));
-    const label single = args.getOrDefault<label>("member", -1);
-    if (!args.found("maps"))
+    if (runs)
     {
         #include "runMembers.H"
     }
