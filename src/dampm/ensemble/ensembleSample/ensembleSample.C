@@ -419,6 +419,15 @@ void Foam::ensembleSample::checkEntryPath
             << example.c_str() << exit(FatalIOError);
     }
 
+    if (file.relative(caseDir) == "system/blockMeshDict")
+    {
+        FatalIOErrorInFunction(dict)
+            << keyword << " \"" << path.c_str() << "\": the members copy the"
+            << " base case's mesh, so an entry of system/blockMeshDict would"
+            << " not change it" << example.c_str() << " in another file"
+            << exit(FatalIOError);
+    }
+
     IFstream is(file);
     const dictionary fileDict(is);
     const dictionary* scope = &fileDict;
