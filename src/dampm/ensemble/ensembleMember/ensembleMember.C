@@ -224,6 +224,25 @@ Foam::fileName Foam::ensembleMember::mapsDir() const
 }
 
 
+bool Foam::ensembleMember::mapsAtEnd(string& why) const
+{
+    IFstream is(dir_/"system"/"controlDict");
+    const scalar endTime = dictionary(is).get<scalar>("endTime");
+    const fileName maps(mapsDir());
+    const scalar last = maps.empty() ? -GREAT : readScalar(maps.name());
+    if (mag(last - endTime) <= 1e-5*max(mag(endTime), 1e-4))
+    {
+        return true;
+    }
+    why =
+        "its last hazard maps are "
+      + (maps.empty() ? "none" : "of time " + maps.name())
+      + ", not of endTime " + Foam::name(endTime)
+      + " (make endTime a write time)";
+    return false;
+}
+
+
 Foam::scalar Foam::ensembleMember::finalVolume
 (
     const word& application

@@ -214,9 +214,12 @@ int Foam::ensembleRunner::run(UPtrList<ensembleMember>& members) const
 
         const label code =
             WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        // Done: ended well, with the hazard maps of its end
         typedef ensembleMember::statusType statusType;
+        string why;
+        const bool maps = code == 0 && member.mapsAtEnd(why);
         const statusType result =
-            code == 0 ? statusType::done
+            maps ? statusType::done
           : stopSignal ? statusType::interrupted
           : statusType::failed;
         member.setStatus(result, code, seconds);
@@ -228,7 +231,7 @@ int Foam::ensembleRunner::run(UPtrList<ensembleMember>& members) const
         {
             ++nFailed;
             Info<< " with exit code " << code << ": "
-                << member.failure(application_).c_str();
+                << (code ? member.failure(application_) : why).c_str();
         }
         else if (result == statusType::done)
         {
