@@ -84,18 +84,22 @@ def killed(c, times, nKills=8, seed=5):
     keeps 2 time directories (purgeWrite), restarted after every kill."""
     frequent = {"writeInterval": 0.01, "purgeWrite": 2}
     ref = fc.newRun("frequent", entries=frequent)
+    started = time.time()
     status, out = c.run(ref)
+    whole = time.time() - started
     fc.checkAccepted("frequent", status, out)
     run = fc.newRun("kill", entries=frequent)
     rng = random.Random(seed)
     kills = incomplete = 0
     for k in range(nKills):
         # Into the time loop (its first summary row: the time series of
-        # the runs before are removed), then a random moment
+        # the runs before are removed), then a random moment within a
+        # share of the whole run's time such that all the kills come
+        # before its end however fast this machine runs it
         shutil.rmtree(os.path.join(run, "postProcessing"), ignore_errors=True)
         p = fc.start(run, "log.kill%d" % k)
         fc.waitForRows(p, run, c.solver, 1)
-        time.sleep(rng.uniform(0.0, 0.25))
+        time.sleep(rng.uniform(0.0, whole / (2 * nKills)))
         if p.poll() is not None:
             break
         p.kill()

@@ -81,6 +81,16 @@ void collectValues
 }
 
 
+//- A number as OpenFOAM reads it back exactly: 17 significant digits
+std::string numberText(const double x)
+{
+    const Foam::exactPrecision digits;
+    Foam::OStringStream os;
+    os << x;
+    return os.str();
+}
+
+
 //- An entry's value as written, every number read back exactly
 std::string valueText(const Foam::entry& e)
 {
@@ -483,7 +493,7 @@ std::vector<Foam::ensembleSample::setting> Foam::ensembleSample::settings
         const double value = values_[parami][memberi];
         if (dict.found("entry"))
         {
-            entries.push_back({dict.get<string>("entry"), exactText(value)});
+            entries.push_back({dict.get<string>("entry"), numberText(value)});
             continue;
         }
         const label scenarioi = label(value);

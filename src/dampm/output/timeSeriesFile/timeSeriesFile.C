@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "timeSeriesFile.H"
+#include "fastOFstream.H"
 #include "OStringStream.H"
 #include "OSspecific.H"
 
@@ -34,7 +35,7 @@ Foam::timeSeriesFile::timeSeriesFile
           : timeName
         );
     mkDir(dir);
-    os_.reset(new OFstream(dir/(file + ".dat")));
+    os_.reset(new fastOFstream(dir/(file + ".dat")));
     os_->precision(16);
 
     OFstream& os = *os_;

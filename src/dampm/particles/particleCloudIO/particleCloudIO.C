@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleCloudIO.H"
+#include "fastOFstream.H"
 #include "mpmTime.H"
 #include "exactPrecision.H"
 #include "speedLimit.H"
@@ -105,7 +106,7 @@ bool Foam::particleCloudIO::writePositions
 {
     const IOobject io(fileIO("positions", cloud::prefix/this->name()));
     mkDir(io.path());
-    OFstream os(io.objectPath(), fmt);
+    fastOFstream os(io.objectPath(), fmt);
     io.writeHeader(os, "Cloud<passiveParticle>");
 
     const gridGeometry& g = grid_.geometry();
@@ -167,12 +168,9 @@ bool Foam::particleCloudIO::writeTypedField
         }
     }
 
-    return fld.regIOobject::writeObject
+    return fastOFstream::writeObject
     (
-        fmt,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
+        fld, fmt, IOstream::currentVersion, IOstream::UNCOMPRESSED
     );
 }
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "structureVTKWriter.H"
+#include "fastOFstream.H"
 #include "exactPrecision.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -303,7 +304,7 @@ Foam::fileName Foam::structureVTKWriter::write
     mkDir(dir_);
     const fileName file(dir_/vtkName(timeIndex));
     {
-        OFstream os(file);
+        fastOFstream os(file);
         os.precision(exactPrecision::digits);
         os  << "# vtk DataFile Version 3.0" << nl
             << titleStart.c_str() << name_.c_str() << " time " << time << nl

@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    fastOFstream writes what OFstream writes, byte for byte (a list of
+    20,000 doubles of every magnitude, signed zeros, denormals, infinities,
+    and floats, at precisions 6, 12, 16 and 17), and counts lines as
+    OFstream does; OpenFOAM's reader reads 200,000 normal doubles within
+    1e+-290 written at exactPrecision back as the same doubles.
+
+\*---------------------------------------------------------------------------*/
+
+#include "scratchDir.H"
+#include "fastOFstream.H"
+#include "exactPrecision.H"
+#include "scalarList.H"
+#include "OSspecific.H"
+#include "IFstream.H"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <random>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Doubles of every magnitude and sign, and the special ones
+scalarList testValues()
+{
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> mantissa(-1, 1);
+    std::uniform_int_distribution<int> exponent(-320, 300);
+    scalarList v(20000);
+    forAll(v, i)
+    {
+        v[i] = mantissa(rng)*std::pow(10.0, exponent(rng));
+    }
+    const double special[] =
+    {
+        0.0, -0.0, 1.0, -1.0, 0.1, 1.0/3, 100, 1e-5, 12345678.9,
+        123456789012345.0, std::numeric_limits<double>::denorm_min(),
+        std::numeric_limits<double>::max(),
+        std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity()
+    };
+    label i = 0;
+    for (const double x : special)
+    {
+        v[i++] = x;
+    }
+    return v;
+}
+
+
+//- The text of a file
+std::string contents(const fileName& file)
+{
+    std::ifstream is(file);
+    std::stringstream text;
+    text << is.rdbuf();
+    return text.str();
+}
+
+
+//- Write values and a float as a list with OFstream type Stream
+template<class Stream>
+std::string written
+(
+    const fileName& file,
+    const scalarList& values,
+    const unsigned precision,
+    label& lines
+)
+{
+    {
+        Stream os(file);
+        os.precision(precision);
+        os  << values << nl << 0.1f << token::SPACE << 3.25f << nl;
+        lines = os.lineNumber();
+    }
+    return contents(file);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(fastOFstream, WritesWhatOFstreamWritesByteForByte)
+{
+    const fileName dir(scratchDir("fastOFstream"));
+    mkDir(dir);
+    const scalarList values(testValues());
+    for (const unsigned precision : {6u, 12u, 16u, exactPrecision::digits})
+    {
+        label linesSlow, linesFast;
+        const std::string slow =
+            written<OFstream>(dir/"slow", values, precision, linesSlow);
+        const std::string fast =
+            written<fastOFstream>(dir/"fast", values, precision, linesFast);
+        EXPECT_EQ(fast, slow) << "precision " << precision;
+        EXPECT_EQ(linesFast, linesSlow);
+        EXPECT_GT(linesFast, label(values.size()));
+    }
+}
+
+
+TEST(fastOFstream, OpenFOAMReadsExactPrecisionBackExactly)
+{
+    const fileName dir(scratchDir("fastOFstream"));
+    mkDir(dir);
+    // Normal doubles within 1e+-290 (OpenFOAM's tokenizer refuses a
+    // denormal, and -8.0062932127950335e+300)
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> mantissa(1, 10);
+    std::uniform_int_distribution<int> exponent(-290, 290);
+    scalarList values(200000);
+    forAll(values, i)
+    {
+        const double sign = i % 2 ? -1 : 1;
+        values[i] = sign*mantissa(rng)*std::pow(10.0, exponent(rng));
+    }
+    {
+        const exactPrecision exact;
+        fastOFstream os(dir/"values");
+        os  << values;
+    }
+    IFstream is(dir/"values");
+    const scalarList read(is);
+    ASSERT_EQ(read.size(), values.size());
+    label nDiffer = 0;
+    forAll(values, i)
+    {
+        nDiffer += !(read[i] == values[i]);
+    }
+    EXPECT_EQ(nDiffer, 0);
+}
+
+
+// ************************************************************************* //
