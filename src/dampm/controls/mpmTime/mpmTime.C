@@ -58,8 +58,23 @@ void Foam::mpmTime::catchStopSignals()
 
 void Foam::mpmTime::checkStartTime()
 {
-    const fileName dir(timePath());
+    // OpenFOAM may name the start time at timePrecision ("2.016") when its
+    // directory took more digits ("2.015995", a stop's): without the
+    // directory's name the run would take it for a fresh start
     const instantList all(times());
+    if (!isDir(timePath()))
+    {
+        for (const instant& t : all)
+        {
+            // (OpenFOAM lists constant/ as a time 0)
+            if (t.name() != constant() && t.equal(value()))
+            {
+                setTime(t, timeIndex());
+                break;
+            }
+        }
+    }
+    const fileName dir(timePath());
     label here = -1;
     forAll(all, i)
     {
