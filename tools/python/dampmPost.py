@@ -162,6 +162,34 @@ def elastic_cloud_energy(case, time, E, nu, h, cloud="mpm3dCloud"):
     return kinetic + (w * V).sum(), (m * u[:, 0]).sum()
 
 
+def membrane_energy_budget(case, E, nu, h, barrier="net", cloud="mpm3dCloud"):
+    """The energy budget of a linear elastic cloud against a flexible
+    barrier, at the cloud's write times: the times, the energy the bodies
+    and the contact hold (the cloud's kinetic and elastic, the structure's
+    strain and kinetic, the contact's push, and the flow's potential energy
+    gained since the start), the contact's dissipation so far [J], and the
+    cloud's x momentum [kg m/s]."""
+    t = [s for s in times(case)
+         if os.path.isdir(os.path.join(case, s, "lagrangian", cloud))]
+    net = read_dat(os.path.join(case, "postProcessing", barrier, "0", "membrane.dat"))
+    flow = read_dat(os.path.join(case, "postProcessing", "mpm3dFoam", "0", "energy.dat"))
+    held, dissipated, px = [], [], []
+    for s in t:
+        eb, p = elastic_cloud_energy(case, s, E, nu, h, cloud)
+        em, d, ep = 0.0, 0.0, 0.0
+        if float(s) > 0:
+            j = np.argmin(abs(net["time"] - float(s)))
+            em = net["strainEnergy"][j] + net["kineticEnergy"][j] + net["contactEnergy"][j]
+            d = net["contactDissipation"][j]
+            k = np.argmin(abs(flow["time"] - float(s)))
+            ep = flow["potentialEnergy"][k] - flow["potentialEnergy"][0]
+        held.append(eb + em + ep)
+        dissipated.append(d)
+        px.append(p)
+    return (np.array([float(s) for s in t]), np.array(held), np.array(dissipated),
+            np.array(px))
+
+
 def ritter(x, t, h0, x0, g=9.81):
     """Ritter's dry-bed dam break: height and velocity at x (array), time t,
     reservoir of depth h0 for x < x0."""

@@ -10,6 +10,8 @@ License
 
 #include "membraneBarrier.H"
 #include "boundBox.H"
+#include "boundedScalar.H"
+#include "knownKeywords.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -20,37 +22,10 @@ Foam::dictionary Foam::membraneBarrier::structureDict(const dictionary& dict)
     {
         s.remove(key);
     }
+    s.remove("contactStiffness");
     return s;
 }
 
-
-
-Foam::flexibleStructure::subCycleReport
-Foam::membraneBarrier::advance(const scalar dt)
-{
-    const structureNodes& n = structure_.nodes();
-    xStart_[0] = n.x;
-    xStart_[1] = n.y;
-    xStart_[2] = n.z;
-    const flexibleStructure::subCycleReport r = structure_.subCycle
-    (
-        dt,
-        [this]{ contact_.collideAtNodes(surface_); },
-        [this]{ contact_.settleAtNodes(surface_); }
-    );
-    double move2 = 0;
-    for (label i = 0; i < n.size(); ++i)
-    {
-        const double d[3] =
-        {
-            n.x[i] - xStart_[0][i], n.y[i] - xStart_[1][i],
-            n.z[i] - xStart_[2][i]
-        };
-        move2 = max(move2, d[0]*d[0] + d[1]*d[1] + d[2]*d[2]);
-    }
-    move_ = std::sqrt(move2);
-    return r;
-}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -67,7 +42,18 @@ Foam::membraneBarrier::membraneBarrier
     condition_(dict),
     structure_(structureDict(dict), caseDir),
     surface_(structure_.nodes(), structure_.membrane().triangles()),
-    contact_(condition_, structure_.nodes().size()),
+    contact_
+    (
+        condition_,
+        structure_.nodes().size(),
+        structure_.membrane().arealMass(),
+        boundedScalar
+        (
+            dict, "contactStiffness",
+            dict.getOrDefault<scalar>("contactStiffness", 0.8),
+            scalarBound::positive
+        )
+    ),
     monitor_(name, structure_.anchors().names().size()),
     g_(g),
     dt_(1),
@@ -75,6 +61,8 @@ Foam::membraneBarrier::membraneBarrier
     minSubSteps_(labelMax),
     maxSubSteps_(0)
 {
+    knownKeywords::add(dict, {"contactStiffness"});
+
     // The external force: the weight (the flow's impulses change the
     // velocities at once)
     structureNodes& n = structure_.nodes();
@@ -118,25 +106,43 @@ void Foam::membraneBarrier::checkInMesh
 }
 
 
-void Foam::membraneBarrier::couple
+const std::vector<Foam::membraneContact::push>&
+Foam::membraneBarrier::pushParticles
 (
     const gridGeometry& g,
-    const bool wall[3][2],
     const mpm3dParticles& p,
     const nodeBox& particleNodes,
-    const double massTol,
-    const double dt,
-    mpm3dGrid& grid
+    const membraneContact::penalty& stiffness,
+    const double dt
 )
 {
     // The bucket reaches the particles whose stencils reach the membrane;
     // rebuilt after a move of half a cell
     const double h = g.hMax();
     surface_.update(g, 2*h, 0.5*h);
-    contact_.findSides(g, surface_, p, particleNodes);
-    contact_.findContacts(g, surface_, wall, massTol, grid);
-    const flexibleStructure::subCycleReport r = advance(dt);
-    contact_.finishAtNodes(dt, grid);
+    return contact_.pushParticles(g, surface_, p, particleNodes, stiffness, dt);
+}
+
+
+void Foam::membraneBarrier::advance(const double dt)
+{
+    contact_.kickMembrane(surface_, dt);
+    const structureNodes& n = structure_.nodes();
+    xStart_[0] = n.x;
+    xStart_[1] = n.y;
+    xStart_[2] = n.z;
+    const flexibleStructure::subCycleReport r = structure_.subCycle(dt);
+    double move2 = 0;
+    for (label i = 0; i < n.size(); ++i)
+    {
+        const double d[3] =
+        {
+            n.x[i] - xStart_[0][i], n.y[i] - xStart_[1][i],
+            n.z[i] - xStart_[2][i]
+        };
+        move2 = max(move2, d[0]*d[0] + d[1]*d[1] + d[2]*d[2]);
+    }
+    move_ = std::sqrt(move2);
     dt_ = dt;
     if (!maxSubSteps_)
     {

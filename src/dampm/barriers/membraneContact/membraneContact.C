@@ -9,7 +9,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "membraneContact.H"
-#include "nodeContact.H"
 #include "dictionary.H"
 #include <cmath>
 
@@ -18,19 +17,9 @@ License
 namespace
 {
 
-// Reach of a particle's stencil [cells per axis]: the quadratic B-spline's
-// and GIMP's support
-constexpr double stencilReach = 1.5;
-
-// How far beside the membrane's rim a node or a path's crossing still
+// How far beside the membrane's rim a particle or a path's crossing still
 // counts as on it [cells]
 constexpr double rimTolerance = 0.5;
-
-// Nodes on the flow's side nearer than this take the contact [cells]
-constexpr double contactDepth = 0.5;
-
-// The sides of the particles that touched a node
-constexpr char plusSide = 1, minusSide = 2;
 
 // A particle put back sits this far on its side [cells]
 constexpr double guardGap = 1e-3;
@@ -45,58 +34,79 @@ inline double dot3(const double a[3], const double b[3])
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::membraneContact::addSide
+void Foam::membraneContact::findNear
 (
     const gridGeometry& g,
-    const double x[3],
-    const double m,
-    const int side,
-    const double phi
+    const membraneSurface& surface,
+    const mpm3dParticles& p,
+    const nodeBox& particleNodes
 )
 {
-    gridGeometry::index lo[3], hi[3];
-    double xi[3];
+    near_.clear();
+    side_.clear();
+    nearQ_.clear();
+    phi0_.clear();
     for (int d = 0; d < 3; ++d)
     {
-        xi[d] = g.local(d, x[d]);
-        lo[d] = std::max
-        (
-            gridGeometry::index(std::ceil(xi[d] - stencilReach)),
-            -gridGeometry::nGhost
-        );
-        hi[d] = std::min
-        (
-            gridGeometry::index(std::floor(xi[d] + stencilReach)),
-            g.nCells[d] + gridGeometry::nGhost
-        );
+        x0_[d].clear();
     }
-    const char sideBit = side > 0 ? plusSide : minusSide;
-    for (gridGeometry::index k = lo[2]; k <= hi[2]; ++k)
+    const double rim = rimTolerance*g.hMax();
+
+    // The particles within reach of the membrane (none while their box
+    // is clear of the membrane's), their nearest points searched in
+    // parallel
+    candidates_.clear();
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; ++d)
     {
-        const double dz = (xi[2] - k)*g.dx[2];
-        const double wz = 1 - std::abs(xi[2] - k)/stencilReach;
-        for (gridGeometry::index j = lo[1]; j <= hi[1]; ++j)
+        lo[d] = g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
+        hi[d] = g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
+    }
+    if (particleNodes.empty() || !surface.meets(lo, hi))
+    {
+        return;
+    }
+    inReach_.resize(p.n);
+    #pragma omp parallel for schedule(static)
+    for (label i = 0; i < p.n; ++i)
+    {
+        const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+        inReach_[i] = surface.inReach(g, x);
+    }
+    for (label i = 0; i < p.n; ++i)
+    {
+        if (inReach_[i])
         {
-            const double dy = (xi[1] - j)*g.dx[1];
-            const double wyz = wz*(1 - std::abs(xi[1] - j)/stencilReach);
-            for (gridGeometry::index i = lo[0]; i <= hi[0]; ++i)
-            {
-                const double dx = (xi[0] - i)*g.dx[0];
-                const double w = wyz*(1 - std::abs(xi[0] - i)/stencilReach);
-                const gridGeometry::index n = g.nodeIndex(i, j, k);
-                // The node lies at least phi - r from the membrane on the
-                // particle's side (a distance changes no faster than the
-                // point moves)
-                const double far = phi - std::sqrt(dx*dx + dy*dy + dz*dz);
-                if (!touchedSides_[n])
-                {
-                    touched_.push_back(n);
-                    farOnSide_[n] = far;
-                }
-                touchedSides_[n] |= sideBit;
-                farOnSide_[n] = std::max(farOnSide_[n], far);
-                sideSum_[n] += w*side*m;
-            }
+            candidates_.push_back(i);
+        }
+    }
+    const label nc = label(candidates_.size());
+    nearPoints_.resize(nc);
+    #pragma omp parallel for schedule(static)
+    for (label c = 0; c < nc; ++c)
+    {
+        const label i = candidates_[c];
+        const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+        surface.nearest(g, x, nearPoints_[c]);
+    }
+
+    // In storage order: the same on any number of threads
+    for (label c = 0; c < nc; ++c)
+    {
+        const membraneSurface::nearPoint& q = nearPoints_[c];
+        if (!onMembrane(q, rim))
+        {
+            continue;
+        }
+        const label i = candidates_[c];
+        const signed char s = q.phi < 0 ? -1 : 1;
+        near_.push_back(i);
+        side_.push_back(s);
+        nearQ_.push_back(q);
+        phi0_.push_back(s*q.phi);
+        for (int d = 0; d < 3; ++d)
+        {
+            x0_[d].push_back(p.x[d][i]);
         }
     }
 }
@@ -145,14 +155,17 @@ void Foam::membraneContact::collide
 Foam::membraneContact::membraneContact
 (
     const contactCondition& condition,
-    const label nNodes
+    const label nNodes,
+    const double arealMass,
+    const double kappa
 )
 :
     condition_(condition),
-    flowLoss_(0),
-    membraneGain_(0),
-    force_(Zero),
-    J_(Zero)
+    arealMass_(arealMass),
+    kappa_(kappa),
+    dissipation_(0),
+    energy_(0),
+    force_(Zero)
 {
     for (int d = 0; d < 3; ++d)
     {
@@ -163,193 +176,90 @@ Foam::membraneContact::membraneContact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::membraneContact::findSides
+const std::vector<Foam::membraneContact::push>&
+Foam::membraneContact::pushParticles
 (
     const gridGeometry& g,
     const membraneSurface& surface,
     const mpm3dParticles& p,
-    const nodeBox& particleNodes
-)
-{
-    sideSum_.resize(g.nNodes(), 0.0);
-    touchedSides_.resize(g.nNodes(), 0);
-    farOnSide_.resize(g.nNodes(), 0.0);
-    touched_.clear();
-    near_.clear();
-    side_.clear();
-    phi0_.clear();
-    for (int d = 0; d < 3; ++d)
-    {
-        x0_[d].clear();
-    }
-    const double rim = rimTolerance*g.hMax();
-
-    // The particles within reach of the membrane (none while their box
-    // is clear of the membrane's), their nearest points searched in
-    // parallel
-    candidates_.clear();
-    double lo[3], hi[3];
-    for (int d = 0; d < 3; ++d)
-    {
-        lo[d] = g.nodeCoord(d, particleNodes.lo[d] - gridGeometry::nGhost);
-        hi[d] = g.nodeCoord(d, particleNodes.hi[d] - gridGeometry::nGhost);
-    }
-    if (particleNodes.empty() || !surface.meets(lo, hi))
-    {
-        return;
-    }
-    inReach_.resize(p.n);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < p.n; ++i)
-    {
-        const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-        inReach_[i] = surface.inReach(g, x);
-    }
-    for (label i = 0; i < p.n; ++i)
-    {
-        if (inReach_[i])
-        {
-            candidates_.push_back(i);
-        }
-    }
-    const label nc = label(candidates_.size());
-    nearPoints_.resize(nc);
-    #pragma omp parallel for schedule(static)
-    for (label c = 0; c < nc; ++c)
-    {
-        const label i = candidates_[c];
-        const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-        surface.nearest(g, x, nearPoints_[c]);
-    }
-
-    // Their sides, summed in storage order: the same on any number of
-    // threads
-    for (label c = 0; c < nc; ++c)
-    {
-        const membraneSurface::nearPoint& q = nearPoints_[c];
-        if (!onMembrane(q, rim))
-        {
-            continue;
-        }
-        const label i = candidates_[c];
-        const double x[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-        const signed char s = q.phi < 0 ? -1 : 1;
-        near_.push_back(i);
-        side_.push_back(s);
-        phi0_.push_back(s*q.phi);
-        for (int d = 0; d < 3; ++d)
-        {
-            x0_[d].push_back(x[d]);
-        }
-        addSide(g, x, p.m[i], s, s*q.phi);
-    }
-}
-
-
-void Foam::membraneContact::findContacts
-(
-    const gridGeometry& g,
-    const membraneSurface& surface,
-    const bool wall[3][2],
-    const double massTol,
-    const mpm3dGrid& grid
+    const nodeBox& particleNodes,
+    const penalty& stiffness,
+    const double dt
 )
 {
     for (int d = 0; d < 3; ++d)
     {
         std::fill(anchored_[d].begin(), anchored_[d].end(), 0.0);
     }
-    J_ = vector::zero;
-    const double h = g.hMax();
-    const double rim = rimTolerance*h;
-    const label nt = label(touched_.size());
-    nearPoints_.resize(nt);
-    // The nodes with flow that may be in contact: not those the particles
-    // of one side place a cell beyond the contact's depth on their side
-    const double farEnough = (contactDepth + 1)*h;
-    #pragma omp parallel for schedule(static)
-    for (label c = 0; c < nt; ++c)
-    {
-        const gridGeometry::index n = touched_[c];
-        nearPoints_[c].tri = -1;
-        const bool oneSide = touchedSides_[n] != (plusSide | minusSide);
-        if
-        (
-            grid.mass[n] > massTol
-         && !(oneSide && farOnSide_[n] >= farEnough)
-        )
-        {
-            double x[3];
-            g.nodePosition(n, x);
-            surface.nearest(g, x, nearPoints_[c]);
-        }
-    }
+    pushes_.clear();
+    energy_ = 0;
+    force_ = Zero;
+    findNear(g, surface, p, particleNodes);
 
-    // In the order the particles found the nodes
-    contacts_.clear();
-    for (label c = 0; c < nt; ++c)
+    const double omega = kappa_*stiffness.c/(stiffness.maxCo*stiffness.h);
+    for (size_t k = 0; k < near_.size(); ++k)
     {
-        const gridGeometry::index n = touched_[c];
-        const double s = sideSum_[n] < 0 ? -1 : 1;
-        sideSum_[n] = 0;
-        touchedSides_[n] = 0;
-        const membraneSurface::nearPoint& q = nearPoints_[c];
-        if (!onMembrane(q, rim) || s*q.phi >= contactDepth*h)
+        const label i = near_[k];
+        const double m = p.m[i];
+        const double a = std::cbrt(m/stiffness.rho);
+        const double delta = 0.5*a;
+        const double gap = phi0_[k];
+        const membraneSurface::nearPoint& q = nearQ_[k];
+        if (gap >= delta || q.lateral2 > delta*delta)
         {
             continue;
         }
-        contactNode cn;
-        cn.node = n;
-        cn.q = q;
+        const double ms = arealMass_*a*a;
+        const double mu = m*ms/(m + ms);
+        const double kp = mu*omega*omega;
+        const double fn = kp*(delta - gap);
+        energy_ += 0.5*fn*(delta - gap);
+
+        // The relative velocity's tangential part, changed by the contact
+        // condition as the normal force's velocity change would
+        const double n[3] = {side_[k]*q.n[0], side_[k]*q.n[1], side_[k]*q.n[2]};
+        double vm[3];
+        surface.velocity(q, vm);
+        double rel[3] =
+            {p.u[0][i] - vm[0], p.u[1][i] - vm[1], p.u[2][i] - vm[2]};
+        const double vn = dot3(rel, n);
+        const double dvn = -fn*dt/mu;
+        double vt[3];
         for (int d = 0; d < 3; ++d)
         {
-            cn.q.n[d] *= s;
+            vt[d] = rel[d] - vn*n[d];
+            rel[d] = vt[d] + dvn*n[d];
         }
-        cn.mass = nodeContact::domainShare(g, wall, n)*grid.mass[n];
-        cn.v[0] = grid.vx[n];
-        cn.v[1] = grid.vy[n];
-        cn.v[2] = grid.vz[n];
-        std::copy(cn.v, cn.v + 3, cn.v0);
-        contacts_.push_back(cn);
-    }
-    touched_.clear();
-}
-
-
-void Foam::membraneContact::collideAtNodes(membraneSurface& surface)
-{
-    double J[3] = {0, 0, 0};
-    for (contactNode& c : contacts_)
-    {
-        collide(surface, c.q, c.q.n, c.mass, c.v, J);
-    }
-    J_ += vector(J[0], J[1], J[2]);
-}
-
-
-void Foam::membraneContact::settleAtNodes(membraneSurface& surface)
-{
-    membraneGain_ += surface.settleKicks();
-}
-
-
-void Foam::membraneContact::finishAtNodes(const double dt, mpm3dGrid& grid)
-{
-    // The work of the step's impulses on the flow: its particles move with
-    // the nodes' velocity after the contact (x + dt v)
-    double work = 0;
-    for (const contactNode& c : contacts_)
-    {
-        grid.vx[c.node] = c.v[0];
-        grid.vy[c.node] = c.v[1];
-        grid.vz[c.node] = c.v[2];
+        condition_.apply(n, dvn, rel);
+        push pi;
+        pi.particle = i;
+        pi.q = q;
         for (int d = 0; d < 3; ++d)
         {
-            work += c.mass*(c.v[d] - c.v0[d])*c.v[d];
+            pi.f[d] = fn*n[d] + mu*(rel[d] - vt[d])/dt;
         }
+        dissipation_ += 0.5*mu*(dot3(vt, vt) - dot3(rel, rel));
+        force_ -= vector(pi.f[0], pi.f[1], pi.f[2]);
+        pushes_.push_back(pi);
     }
-    flowLoss_ -= work;
-    force_ = J_/dt;
+    return pushes_;
+}
+
+
+void Foam::membraneContact::kickMembrane
+(
+    membraneSurface& surface,
+    const double dt
+)
+{
+    for (const push& pi : pushes_)
+    {
+        const double J[3] = {-pi.f[0]*dt, -pi.f[1]*dt, -pi.f[2]*dt};
+        surface.kick(pi.q, J, anchored_);
+    }
+    // (The push's work is its energy's change: only the guard's kicks
+    // are settled)
+    surface.settleKicks();
 }
 
 
@@ -410,13 +320,13 @@ Foam::label Foam::membraneContact::stopCrossings
         const double nrm[3] = {s*q.n[0], s*q.n[1], s*q.n[2]};
         const double back = gap - s*q.phi;
         const double* const from = beyond ? x : xc;
-        double u[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
-        const double Jp[3] = {J[0], J[1], J[2]};
+        const double u0[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
+        double u[3] = {u0[0], u0[1], u0[2]};
         collide(surface, q, nrm, p.m[i], u, J);
-        membraneGain_ += surface.settleKicks();
-        // The impulse at the particle's velocity after it
-        flowLoss_ +=
-            (J[0] - Jp[0])*u[0] + (J[1] - Jp[1])*u[1] + (J[2] - Jp[2])*u[2];
+        // The meeting's loss: the particle's kinetic energy less the
+        // membrane's gain
+        dissipation_ +=
+            0.5*p.m[i]*(dot3(u0, u0) - dot3(u, u)) - surface.settleKicks();
         for (int d = 0; d < 3; ++d)
         {
             p.x[d][i] = from[d] + back*nrm[d];
@@ -431,15 +341,13 @@ Foam::label Foam::membraneContact::stopCrossings
 
 void Foam::membraneContact::writeState(dictionary& state) const
 {
-    state.set("contactFlowLoss", flowLoss_);
-    state.set("contactMembraneGain", membraneGain_);
+    state.set("contactDissipation", dissipation_);
 }
 
 
 void Foam::membraneContact::readState(const dictionary& state)
 {
-    flowLoss_ = state.get<scalar>("contactFlowLoss");
-    membraneGain_ = state.get<scalar>("contactMembraneGain");
+    dissipation_ = state.get<scalar>("contactDissipation");
 }
 
 

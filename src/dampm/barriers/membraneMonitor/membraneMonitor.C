@@ -58,13 +58,15 @@ void Foam::membraneMonitor::openFiles
             {"time", "maxDeflection", "strainEnergy", "kineticEnergy",
              "dissipatedEnergy", "contactForceX", "contactForceY",
              "contactForceZ", "contactDissipation", "momentumX", "momentumY",
-             "momentumZ"},
+             "momentumZ", "contactEnergy"},
             {"Flexible barrier " + name_ + ": maxDeflection [m] the largest"
              " node displacement; strainEnergy (membrane and ropes),",
              "kineticEnergy, dissipatedEnergy (damping, brakes, contact) and"
              " its contactDissipation [J] since the start;",
              "contactForce [N] the flow's force on it; momentum [kg m/s] of"
-             " its free nodes (at the last half step)"}
+             " its free nodes (at the last half step);",
+             "contactEnergy [J] the energy the contact's push holds at the"
+             " start of the step"}
         )
     );
 }
@@ -76,7 +78,8 @@ void Foam::membraneMonitor::write
     const List<vector>& anchorForces,
     const flexibleStructure& s,
     const vector& contactForce,
-    const scalar contactDissipation
+    const scalar contactDissipation,
+    const scalar contactEnergy
 )
 {
     const wordList& groups = s.anchors().names();
@@ -107,7 +110,7 @@ void Foam::membraneMonitor::write
             t, deflection, e.membraneStrain + e.ropeStrain, e.kinetic,
             e.dampingDissipation + e.brakeDissipation + contactDissipation,
             contactForce.x(), contactForce.y(), contactForce.z(),
-            contactDissipation, P.x(), P.y(), P.z()
+            contactDissipation, P.x(), P.y(), P.z(), contactEnergy
         })
     );
     if (deflection > peakDeflection_)

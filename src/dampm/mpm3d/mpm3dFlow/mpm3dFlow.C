@@ -12,6 +12,7 @@ License
 #include "knownKeywords.H"
 #include "orderedSums.H"
 #include "visitShape.H"
+#include "stencil.H"
 #include "particleCloudIO.H"
 #include "particleMemory.H"
 #include "Time.H"
@@ -873,24 +874,67 @@ void Foam::mpm3dFlow::updateGrid(const scalar dt)
 }
 
 
+void Foam::mpm3dFlow::pushFromMembranes
+(
+    const scalar dt,
+    const scalar maxCo
+)
+{
+    if (membranes_.empty())
+    {
+        return;
+    }
+    const gridGeometry& g = grid_.geometry();
+    const mpm3dParticles p = kernelView();
+    const membraneContact::penalty stiffness
+    {
+        material_->rho(), material_->waveSpeed(), g.hMin(), maxCo
+    };
+    double* const f[3] = {nodes_.fx.data(), nodes_.fy.data(), nodes_.fz.data()};
+    for (membraneBarrier& m : membranes_)
+    {
+        const std::vector<membraneContact::push>& pushes =
+            m.pushParticles(g, p, stencilNodes_, stiffness, dt);
+        // Through the grid as the particles' weight goes (few particles:
+        // in order, the same on any number of threads)
+        visitKernel
+        (
+            [&](const auto& kernel)
+            {
+                using kernelType = std::decay_t<decltype(kernel)>;
+                for (const membraneContact::push& pi : pushes)
+                {
+                    const label i = pi.particle;
+                    const stencil<3, kernelType> s
+                    (
+                        g, kernel, p.x[0][i], p.x[1][i], p.x[2][i]
+                    );
+                    s.forEachNode
+                    (
+                        [&](label n, double N, const double*, const double*)
+                        {
+                            for (int d = 0; d < 3; ++d)
+                            {
+                                f[d][n] += N*pi.f[d];
+                            }
+                        }
+                    );
+                }
+            }
+        );
+    }
+}
+
+
 void Foam::mpm3dFlow::contact(const scalar dt)
 {
     for (barrier& b : barriers_)
     {
         b.applyContact(nodes_, settings_.massTol, dt);
     }
-    if (membranes_.empty())
-    {
-        return;
-    }
-    const mpm3dParticles p = kernelView();
     for (membraneBarrier& m : membranes_)
     {
-        m.couple
-        (
-            grid_.geometry(), settings_.wall, p, stencilNodes_,
-            settings_.massTol, dt, nodes_
-        );
+        m.advance(dt);
     }
 }
 
