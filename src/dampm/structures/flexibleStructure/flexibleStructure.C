@@ -269,26 +269,12 @@ void Foam::flexibleStructure::step(const scalar dt)
 Foam::flexibleStructure::subCycleReport
 Foam::flexibleStructure::subCycle(const scalar dtFlow)
 {
-    return subCycle(dtFlow, []{}, []{});
-}
-
-
-Foam::flexibleStructure::subCycleReport
-Foam::flexibleStructure::subCycle
-(
-    const scalar dtFlow,
-    const std::function<void()>& beforeStep,
-    const std::function<void()>& afterStep
-)
-{
     // Equal sub-steps: no sliver step at the end of the flow step
     const label nSteps = max(label(1), label(std::ceil(dtFlow/dtStable_)));
     const scalar dt = dtFlow/nSteps;
     for (label stepi = 0; stepi < nSteps; ++stepi)
     {
-        beforeStep();
         step(dt);
-        afterStep();
     }
     return {nSteps, dt, limiter_};
 }
