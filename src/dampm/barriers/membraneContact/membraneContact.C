@@ -69,6 +69,11 @@ void Foam::membraneContact::addSide
             gridGeometry::index(std::floor(xi[d] + stencilReach)),
             g.nCells[d] + gridGeometry::nGhost
         );
+        if (!g.varies(d))
+        {
+            // A plane slice's one row of nodes, level with the particle
+            xi[d] = lo[d] = hi[d] = 0;
+        }
     }
     const char sideBit = side > 0 ? plusSide : minusSide;
     for (gridGeometry::index k = lo[2]; k <= hi[2]; ++k)
