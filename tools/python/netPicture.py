@@ -29,12 +29,15 @@ def peakLoad():
     d = os.path.join(case, "postProcessing", barrier)
     path = os.path.join(d, sorted(os.listdir(d), key=float)[0], "anchorForces.dat")
     best = (0.0, 0.0)
+    columns = []
     with open(path) as f:
         for line in f:
             if line.startswith("#"):
+                columns = line[1:].split()
                 continue
             v = [float(x) for x in line.split()]
-            F = [sum(v[1 + c::3]) for c in range(3)]
+            # The forces [N], not a plane slice's per width
+            F = [sum(x for name, x in zip(columns, v) if name.endswith(c)) for c in ("Fx", "Fy", "Fz")]
             size = (F[0]**2 + F[1]**2 + F[2]**2)**0.5
             if size > best[1]:
                 best = (v[0], size)

@@ -106,6 +106,17 @@ void Foam::membraneBarrier::checkInMesh
 }
 
 
+void Foam::membraneBarrier::onPlaneSlice
+(
+    const gridGeometry& g,
+    const dictionary& dict
+)
+{
+    structure_.acrossSlice(g.origin[1], g.upper(1), dict);
+    monitor_.perUnitWidth(g.upper(1) - g.origin[1]);
+}
+
+
 const std::vector<Foam::membraneContact::push>&
 Foam::membraneBarrier::pushParticles
 (

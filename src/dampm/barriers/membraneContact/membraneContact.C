@@ -201,7 +201,11 @@ Foam::membraneContact::pushParticles
     {
         const label i = near_[k];
         const double m = p.m[i];
-        const double a = std::cbrt(m/stiffness.rho);
+        // The particle's width along the membrane's normal and its face
+        const double V = m/stiffness.rho;
+        const double w = stiffness.width;
+        const double a = w > 0 ? std::sqrt(V/w) : std::cbrt(V);
+        const double face = w > 0 ? a*w : a*a;
         const double delta = 0.5*a;
         const double gap = phi0_[k];
         const membraneSurface::nearPoint& q = nearQ_[k];
@@ -209,7 +213,7 @@ Foam::membraneContact::pushParticles
         {
             continue;
         }
-        const double ms = arealMass_*a*a;
+        const double ms = arealMass_*face;
         const double mu = m*ms/(m + ms);
         const double kp = mu*omega*omega;
         const double fn = kp*(delta - gap);

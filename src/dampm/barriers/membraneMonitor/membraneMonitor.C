@@ -20,8 +20,51 @@ Foam::membraneMonitor::membraneMonitor(const word& name, const label nGroups)
     peakDeflection_(0),
     peakDeflectionTime_(0),
     peakContact_(0),
-    peakContactTime_(0)
+    peakContactTime_(0),
+    width_(0)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::membraneMonitor::addPerWidth
+(
+    wordList& description,
+    wordList& columns,
+    const label first,
+    const label last
+) const
+{
+    if (width_ > 0)
+    {
+        description.append
+        (
+            "width " + Foam::name(width_) + " m: a plane slice's thickness;"
+            " *PerWidth [N/m] the forces per unit width"
+        );
+        for (label c = first; c < last; ++c)
+        {
+            columns.append(columns[c] + "PerWidth");
+        }
+    }
+}
+
+
+void Foam::membraneMonitor::addPerWidth
+(
+    List<scalar>& row,
+    const label first,
+    const label last
+) const
+{
+    if (width_ > 0)
+    {
+        for (label c = first; c < last; ++c)
+        {
+            row.append(row[c]/width_);
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -40,33 +83,44 @@ void Foam::membraneMonitor::openFiles
             columns.append(group + c);
         }
     }
+    wordList anchorHeader
+    ({
+        "Force of flexible barrier " + name_ + " on its anchors [N], per"
+        " anchor group and rope (its fixed ends): minus the supports'"
+        " reaction"
+    });
+    addPerWidth(anchorHeader, columns, 1, columns.size());
     anchorFile_.reset
     (
         new timeSeriesFile
         (
-            runTime, name_, "anchorForces", columns,
-            {"Force of flexible barrier " + name_ + " on its anchors [N], per"
-             " anchor group and rope (its fixed ends): minus the supports'"
-             " reaction"}
+            runTime, name_, "anchorForces", columns, anchorHeader
         )
     );
+    wordList membraneColumns
+    ({
+        "time", "maxDeflection", "strainEnergy", "kineticEnergy",
+        "dissipatedEnergy", "contactForceX", "contactForceY",
+        "contactForceZ", "contactDissipation", "momentumX", "momentumY",
+        "momentumZ", "contactEnergy"
+    });
+    wordList membraneHeader
+    ({
+        "Flexible barrier " + name_ + ": maxDeflection [m] the largest"
+        " node displacement; strainEnergy (membrane and ropes),",
+        "kineticEnergy, dissipatedEnergy (damping, brakes, contact) and"
+        " its contactDissipation [J] since the start;",
+        "contactForce [N] the flow's force on it; momentum [kg m/s] of"
+        " its free nodes (at the last half step);",
+        "contactEnergy [J] the energy the contact's push holds at the"
+        " start of the step"
+    });
+    addPerWidth(membraneHeader, membraneColumns, 5, 8);
     membraneFile_.reset
     (
         new timeSeriesFile
         (
-            runTime, name_, "membrane",
-            {"time", "maxDeflection", "strainEnergy", "kineticEnergy",
-             "dissipatedEnergy", "contactForceX", "contactForceY",
-             "contactForceZ", "contactDissipation", "momentumX", "momentumY",
-             "momentumZ", "contactEnergy"},
-            {"Flexible barrier " + name_ + ": maxDeflection [m] the largest"
-             " node displacement; strainEnergy (membrane and ropes),",
-             "kineticEnergy, dissipatedEnergy (damping, brakes, contact) and"
-             " its contactDissipation [J] since the start;",
-             "contactForce [N] the flow's force on it; momentum [kg m/s] of"
-             " its free nodes (at the last half step);",
-             "contactEnergy [J] the energy the contact's push holds at the"
-             " start of the step"}
+            runTime, name_, "membrane", membraneColumns, membraneHeader
         )
     );
 }
@@ -98,21 +152,21 @@ void Foam::membraneMonitor::write
             peakAnchorTime_[gi] = t;
         }
     }
+    addPerWidth(row, 1, row.size());
     anchorFile_->write(row);
 
     const flexibleStructure::energyBudget& e = s.energies();
     const scalar deflection = s.maxDeflection();
     const vector P = s.momentum();
-    membraneFile_->write
-    (
-        List<scalar>
-        ({
-            t, deflection, e.membraneStrain + e.ropeStrain, e.kinetic,
-            e.dampingDissipation + e.brakeDissipation + contactDissipation,
-            contactForce.x(), contactForce.y(), contactForce.z(),
-            contactDissipation, P.x(), P.y(), P.z(), contactEnergy
-        })
-    );
+    List<scalar> membraneRow
+    ({
+        t, deflection, e.membraneStrain + e.ropeStrain, e.kinetic,
+        e.dampingDissipation + e.brakeDissipation + contactDissipation,
+        contactForce.x(), contactForce.y(), contactForce.z(),
+        contactDissipation, P.x(), P.y(), P.z(), contactEnergy
+    });
+    addPerWidth(membraneRow, 5, 8);
+    membraneFile_->write(membraneRow);
     if (deflection > peakDeflection_)
     {
         peakDeflection_ = deflection;
@@ -132,15 +186,22 @@ void Foam::membraneMonitor::report
     const wordList& groups
 ) const
 {
+    // On a plane slice, per unit width too
+    auto perWidth = [this](const scalar F)
+    {
+        return width_ > 0
+          ? " (" + Foam::name(F/width_) + " N/m)" : std::string();
+    };
     os  << "Flexible barrier " << name_ << ": peak contact force "
-        << peakContact_ << " N at t = " << peakContactTime_
+        << peakContact_ << " N" << perWidth(peakContact_).c_str()
+        << " at t = " << peakContactTime_
         << " s, largest deflection " << peakDeflection_ << " m at t = "
         << peakDeflectionTime_ << " s" << nl;
     forAll(groups, gi)
     {
         os  << "    anchor " << groups[gi] << ": peak force "
-            << peakAnchor_[gi] << " N at t = " << peakAnchorTime_[gi] << " s"
-            << nl;
+            << peakAnchor_[gi] << " N" << perWidth(peakAnchor_[gi]).c_str()
+            << " at t = " << peakAnchorTime_[gi] << " s" << nl;
     }
 }
 

@@ -274,6 +274,47 @@ void Foam::membraneSurface::nearestOn
 }
 
 
+int Foam::membraneSurface::shares
+(
+    const nearPoint& q,
+    label nodei[6],
+    double w[6]
+) const
+{
+    if (nodes_.twin.empty())
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            nodei[k] = node(q.tri, k);
+            w[k] = q.w[k];
+        }
+        return 3;
+    }
+    // Twins move together: a pair takes the weights of both
+    int n = 0;
+    auto add = [&](const label i, const double wi)
+    {
+        for (int k = 0; k < n; ++k)
+        {
+            if (nodei[k] == i)
+            {
+                w[k] += wi;
+                return;
+            }
+        }
+        nodei[n] = i;
+        w[n++] = wi;
+    };
+    for (int k = 0; k < 3; ++k)
+    {
+        const label i = node(q.tri, k);
+        add(i, 0.5*q.w[k]);
+        add(nodes_.twin[i], 0.5*q.w[k]);
+    }
+    return n;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::membraneSurface::membraneSurface
@@ -311,10 +352,13 @@ void Foam::membraneSurface::update
 bool Foam::membraneSurface::nearest
 (
     const gridGeometry& g,
-    const double p[3],
+    const double x[3],
     nearPoint& q
 ) const
 {
+    // A plane slice's point on its face y0, as its nodes (the bucket's
+    // cells are one across)
+    const double p[3] = {x[0], g.plane ? g.origin[1] : x[1], x[2]};
     const gridGeometry::index c = g.cellOf(p[0], p[1], p[2]);
     const auto it = std::lower_bound(cells_.begin(), cells_.end(), c);
     q.tri = -1;
@@ -382,13 +426,16 @@ bool Foam::membraneSurface::nearest
 
 double Foam::membraneSurface::inverseMass(const nearPoint& q) const
 {
+    label nodei[6];
+    double w[6];
+    const int n = shares(q, nodei, w);
     double inv = 0;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < n; ++k)
     {
-        const label i = node(q.tri, k);
+        const label i = nodei[k];
         if (!nodes_.fixed[i])
         {
-            inv += q.w[k]*q.w[k]/nodes_.mass[i];
+            inv += w[k]*w[k]/nodes_.mass[i];
         }
     }
     return inv;
@@ -404,10 +451,13 @@ void Foam::membraneSurface::kick
 {
     structureNodes& n = nodes_;
     isKicked_.resize(n.size(), 0);
-    for (int k = 0; k < 3; ++k)
+    label nodei[6];
+    double w[6];
+    const int nShares = shares(q, nodei, w);
+    for (int k = 0; k < nShares; ++k)
     {
-        const label i = node(q.tri, k);
-        const double Jk[3] = {q.w[k]*J[0], q.w[k]*J[1], q.w[k]*J[2]};
+        const label i = nodei[k];
+        const double Jk[3] = {w[k]*J[0], w[k]*J[1], w[k]*J[2]};
         if (n.fixed[i])
         {
             for (int d = 0; d < 3; ++d)
@@ -459,13 +509,16 @@ double Foam::membraneSurface::settleKicks()
 
 void Foam::membraneSurface::velocity(const nearPoint& q, double v[3]) const
 {
+    label nodei[6];
+    double w[6];
+    const int n = shares(q, nodei, w);
     v[0] = v[1] = v[2] = 0;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < n; ++k)
     {
-        const label i = node(q.tri, k);
-        v[0] += q.w[k]*nodes_.vx[i];
-        v[1] += q.w[k]*nodes_.vy[i];
-        v[2] += q.w[k]*nodes_.vz[i];
+        const label i = nodei[k];
+        v[0] += w[k]*nodes_.vx[i];
+        v[1] += w[k]*nodes_.vy[i];
+        v[2] += w[k]*nodes_.vz[i];
     }
 }
 

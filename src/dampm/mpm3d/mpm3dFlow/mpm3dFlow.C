@@ -563,20 +563,15 @@ Foam::mpm3dFlow::mpm3dFlow
         }
         if (membraneBarrier::isMembrane(e.dict()))
         {
-            if (grid.isPlane())
-            {
-                FatalIOErrorInFunction(e.dict())
-                    << "barrier " << e.keyword() << " is a membrane, which"
-                    << " needs a 3D mesh; this one is a plane slice (one"
-                    << " cell across y with empty patches); allowed on a"
-                    << " plane slice: plane, box, triSurface, terrain"
-                    << exit(FatalIOError);
-            }
             membranes_.append
             (
                 new membraneBarrier(e.keyword(), e.dict(), caseDir, g)
             );
             membranes_.last().checkInMesh(grid.geometry(), e.dict());
+            if (grid.isPlane())
+            {
+                membranes_.last().onPlaneSlice(grid.geometry(), e.dict());
+            }
             continue;
         }
         barriers_.append(new barrier(e.keyword(), e.dict(), caseDir));
@@ -888,7 +883,8 @@ void Foam::mpm3dFlow::pushFromMembranes
     const mpm3dParticles p = kernelView();
     const membraneContact::penalty stiffness
     {
-        material_->rho(), material_->waveSpeed(), g.hMin(), maxCo
+        material_->rho(), material_->waveSpeed(), g.hMin(), maxCo,
+        g.plane ? g.upper(1) - g.origin[1] : 0
     };
     double* const f[3] = {nodes_.fx.data(), nodes_.fy.data(), nodes_.fz.data()};
     for (membraneBarrier& m : membranes_)

@@ -247,6 +247,43 @@ Foam::flexibleStructure::flexibleStructure
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::flexibleStructure::acrossSlice
+(
+    const scalar yLo,
+    const scalar yHi,
+    const dictionary& dict
+)
+{
+    // Faces and twins to round-off of the slice's thickness
+    nodes_.pairAcross(yLo, yHi, 1e-6*(yHi - yLo), dict);
+
+    // A triangle within one element of the strip (its nodes in two pairs
+    // of twins) stays a flat piece of the strip's plane section: its
+    // normal in the x-z plane
+    const std::vector<label>& tri = membrane_.triangles();
+    for (size_t t = 0; 3*t < tri.size(); ++t)
+    {
+        label pair[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            const label i = tri[3*t + k];
+            pair[k] = min(i, nodes_.twin[i]);
+        }
+        if (pair[0] != pair[1] && pair[1] != pair[2] && pair[0] != pair[2])
+        {
+            FatalIOErrorInFunction(dict)
+                << "membrane triangle " << label(t) << " (nodes at "
+                << nodes_.position(tri[3*t]) << ' '
+                << nodes_.position(tri[3*t + 1]) << ' '
+                << nodes_.position(tri[3*t + 2]) << ") spans more than one"
+                << " element of the strip across the plane slice; allowed:"
+                << " triangles within one element (geometry: a panel one"
+                << " element across the slice)" << exit(FatalIOError);
+        }
+    }
+}
+
+
 void Foam::flexibleStructure::step(const scalar dt)
 {
     std::fill(nodes_.fx.begin(), nodes_.fx.end(), 0.0);
@@ -260,6 +297,7 @@ void Foam::flexibleStructure::step(const scalar dt)
     energy_.ropeStrain = ropes_.addInternalForces(nodes_, beta_, ropePower);
     energy_.brakeDissipation = ropes_.brakeDissipation();
     energy_.dampingDissipation += dt*(membranePower + ropePower);
+    nodes_.tieTwins();
 
     advance(dt);
     time_ += dt;

@@ -13,6 +13,7 @@ License
 #include "exactPrecision.H"
 #include "vectorField.H"
 #include <algorithm>
+#include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -118,6 +119,101 @@ void Foam::structureNodes::clearExternalForces()
     std::fill(fExtX.begin(), fExtX.end(), 0.0);
     std::fill(fExtY.begin(), fExtY.end(), 0.0);
     std::fill(fExtZ.begin(), fExtZ.end(), 0.0);
+}
+
+
+void Foam::structureNodes::pairAcross
+(
+    const scalar yLo,
+    const scalar yHi,
+    const scalar tol,
+    const dictionary& dict
+)
+{
+    const label n = size();
+    const char* const allowed =
+        "; allowed on a plane slice: a strip across the slice's thickness,"
+        " one element across, its nodes on the slice's faces in twins at the"
+        " same x and z (geometry: e.g. a panel with two corners at each"
+        " face; ropes: one on each face)";
+    twin.assign(n, -1);
+    std::vector<char> onFace(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const bool onLo = std::abs(y0[i] - yLo) <= tol;
+        if (!onLo && std::abs(y0[i] - yHi) > tol)
+        {
+            FatalIOErrorInFunction(dict)
+                << "node " << i << " at " << referencePosition(i)
+                << " lies on neither face of the plane slice, y = " << yLo
+                << " and y = " << yHi << allowed << exit(FatalIOError);
+        }
+        onFace[i] = onLo ? 0 : 1;
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n && twin[i] < 0 && onFace[i] == 0; ++j)
+        {
+            if
+            (
+                onFace[j] == 1 && twin[j] < 0
+             && std::abs(x0[j] - x0[i]) <= tol
+             && std::abs(z0[j] - z0[i]) <= tol
+            )
+            {
+                twin[i] = j;
+                twin[j] = i;
+            }
+        }
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        const label j = twin[i];
+        if (j < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "node " << i << " at " << referencePosition(i)
+                << " has no twin on the plane slice's other face" << allowed
+                << exit(FatalIOError);
+        }
+        if (fixed[i] != fixed[j])
+        {
+            FatalIOErrorInFunction(dict)
+                << "node " << i << " at " << referencePosition(i)
+                << (fixed[i] ? " is" : " is not") << " anchored, its twin "
+                << j << " at " << referencePosition(j)
+                << (fixed[j] ? " is" : " is not") << "; allowed on a plane"
+                << " slice: anchors that hold both twins or neither (anchors:"
+                << " a box across the slice's thickness)" << exit(FatalIOError);
+        }
+        if (j > i)
+        {
+            // The twin at the node's x and z; the pair's mass halved
+            x0[j] = x[j] = x0[i];
+            z0[j] = z[j] = z0[i];
+            mass[i] = mass[j] = 0.5*(mass[i] + mass[j]);
+        }
+    }
+}
+
+
+void Foam::structureNodes::tieTwins()
+{
+    const label n = label(twin.size());
+    for (label i = 0; i < n; ++i)
+    {
+        const label j = twin[i];
+        if (j < i)
+        {
+            continue;
+        }
+        for (std::vector<double>* f : {&fx, &fz, &fExtX, &fExtZ})
+        {
+            const double mean = 0.5*((*f)[i] + (*f)[j]);
+            (*f)[i] = (*f)[j] = mean;
+        }
+        fy[i] = fy[j] = fExtY[i] = fExtY[j] = 0;
+    }
 }
 
 
