@@ -168,19 +168,21 @@ def membrane_energy_budget(case, E, nu, h, barrier="net", cloud="mpm3dCloud"):
     and the contact hold (the cloud's kinetic and elastic, the structure's
     strain and kinetic, the contact's push, and the flow's potential energy
     gained since the start), the contact's dissipation so far [J], and the
-    cloud's x momentum [kg m/s]."""
+    cloud's x momentum [kg m/s]. barrier None: a rigid barrier (the cloud's
+    energy alone)."""
     t = [s for s in times(case)
          if os.path.isdir(os.path.join(case, s, "lagrangian", cloud))]
-    net = read_dat(os.path.join(case, "postProcessing", barrier, "0", "membrane.dat"))
+    net = barrier and read_dat(os.path.join(case, "postProcessing", barrier, "0", "membrane.dat"))
     flow = read_dat(os.path.join(case, "postProcessing", "mpm3dFoam", "0", "energy.dat"))
     held, dissipated, px = [], [], []
     for s in t:
         eb, p = elastic_cloud_energy(case, s, E, nu, h, cloud)
         em, d, ep = 0.0, 0.0, 0.0
-        if float(s) > 0:
+        if float(s) > 0 and net:
             j = np.argmin(abs(net["time"] - float(s)))
             em = net["strainEnergy"][j] + net["kineticEnergy"][j] + net["contactEnergy"][j]
             d = net["contactDissipation"][j]
+        if float(s) > 0:
             k = np.argmin(abs(flow["time"] - float(s)))
             ep = flow["potentialEnergy"][k] - flow["potentialEnergy"][0]
         held.append(eb + em + ep)
