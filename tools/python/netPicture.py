@@ -3,6 +3,8 @@ the flow at the peak load, for pvbatch without a display:
 
     xvfb-run -a pvbatch netPicture.py CASE BARRIER PNG
 
+(tools/netPicture runs it so, and retries when two virtual displays clash).
+
 The peak load is the largest resultant of the anchor forces
 (postProcessing/BARRIER/<start>/anchorForces.dat: the sum over the anchor
 groups and ropes, so that the ropes' pretensions, which pull the flank

@@ -195,6 +195,7 @@ Foam::membraneContact::pushParticles
     energy_ = 0;
     force_ = Zero;
     findNear(g, surface, p, particleNodes);
+    reach_.resize(near_.size());
 
     const double omega = kappa_*stiffness.c/(stiffness.maxCo*stiffness.h);
     for (size_t k = 0; k < near_.size(); ++k)
@@ -207,6 +208,7 @@ Foam::membraneContact::pushParticles
         const double a = w > 0 ? std::sqrt(V/w) : std::cbrt(V);
         const double face = w > 0 ? a*w : a*a;
         const double delta = 0.5*a;
+        reach_[k] = delta;
         const double gap = phi0_[k];
         const membraneSurface::nearPoint& q = nearQ_[k];
         if (gap >= delta || q.lateral2 > delta*delta)
@@ -322,7 +324,7 @@ Foam::label Foam::membraneContact::stopCrossings
             q = cross;
         }
         const double nrm[3] = {s*q.n[0], s*q.n[1], s*q.n[2]};
-        const double back = gap - s*q.phi;
+        const double back = std::max(gap, reach_[k]) - s*q.phi;
         const double* const from = beyond ? x : xc;
         const double u0[3] = {p.u[0][i], p.u[1][i], p.u[2][i]};
         double u[3] = {u0[0], u0[1], u0[2]};
