@@ -84,7 +84,10 @@ int main(int argc, char *argv[])
 
         ++runTime;
 
-        timers.run(stepTimers::contact, [&]{ flow.pushFromMembranes(dt, maxCo); });
+        timers.run
+        (
+            stepTimers::contact, [&]{ flow.pushFromMembranes(dt, maxCo); }
+        );
         timers.run(stepTimers::grid, [&]{ flow.updateGrid(dt); });
         timers.run(stepTimers::contact, [&]{ flow.contact(dt); });
         timers.run(stepTimers::G2P, [&]

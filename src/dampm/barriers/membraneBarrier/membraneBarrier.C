@@ -27,6 +27,33 @@ Foam::dictionary Foam::membraneBarrier::structureDict(const dictionary& dict)
 }
 
 
+Foam::scalar Foam::membraneBarrier::contactStiffness(const dictionary& dict)
+{
+    const scalar kappa = boundedScalar
+    (
+        dict, "contactStiffness",
+        dict.getOrDefault<scalar>("contactStiffness", 0.8),
+        scalarBound::positive
+    );
+    // omega dt = kappa: the explicit pair is unstable from 2 and gains
+    // energy well before
+    if (kappa >= 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "contactStiffness = " << kappa << " is invalid; allowed: "
+            << "0 < contactStiffness < 2 (the push's omega dt; unstable "
+            << "from 2, default 0.8)" << exit(FatalIOError);
+    }
+    if (kappa > 1)
+    {
+        WarningInFunction
+            << "contactStiffness = " << kappa << " in " << dict.name()
+            << ": above 1 the explicit push gains energy; 0.8 is the default"
+            << endl;
+    }
+    return kappa;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -47,19 +74,15 @@ Foam::membraneBarrier::membraneBarrier
         condition_,
         structure_.nodes().size(),
         structure_.membrane().arealMass(),
-        boundedScalar
-        (
-            dict, "contactStiffness",
-            dict.getOrDefault<scalar>("contactStiffness", 0.8),
-            scalarBound::positive
-        )
+        contactStiffness(dict)
     ),
     monitor_(name, structure_.anchors().names().size()),
     g_(g),
     dt_(1),
     move_(0),
     minSubSteps_(labelMax),
-    maxSubSteps_(0)
+    maxSubSteps_(0),
+    nPutBack_(0)
 {
     knownKeywords::add(dict, {"contactStiffness"});
 
@@ -131,7 +154,10 @@ Foam::membraneBarrier::pushParticles
     // rebuilt after a move of half a cell
     const double h = g.hMax();
     surface_.update(g, 2*h, 0.5*h);
-    return contact_.pushParticles(g, surface_, p, particleNodes, stiffness, dt);
+    return contact_.pushParticles
+    (
+        g, surface_, p, particleNodes, stiffness, dt
+    );
 }
 
 
@@ -229,6 +255,8 @@ void Foam::membraneBarrier::report(Ostream& os) const
             << maxSubSteps_ << " (stable step " << structure_.stableTimeStep()
             << " s, " << structure_.limiter().c_str() << ")" << nl;
     }
+    os  << "    particles the guard put back: " << nPutBack_
+        << " (the push held the rest)" << nl;
 }
 
 

@@ -150,6 +150,61 @@ void Foam::membraneContact::collide
 }
 
 
+double Foam::membraneContact::reach
+(
+    const double m,
+    const penalty& stiffness,
+    double& ms
+) const
+{
+    // The particle's width along the membrane's normal and its face
+    const double V = m/stiffness.rho;
+    const double w = stiffness.width;
+    const double a = w > 0 ? std::sqrt(V/w) : std::cbrt(V);
+    ms = arealMass_*(w > 0 ? a*w : a*a);
+    return 0.5*a;
+}
+
+
+void Foam::membraneContact::contactForce
+(
+    const size_t k,
+    const membraneSurface& surface,
+    const mpm3dParticles& p,
+    const double mu,
+    const double fn,
+    const double dt,
+    double f[3]
+)
+{
+    const label i = near_[k];
+    const membraneSurface::nearPoint& q = nearQ_[k];
+    const double n[3] =
+        {side_[k]*q.n[0], side_[k]*q.n[1], side_[k]*q.n[2]};
+    double vm[3];
+    surface.velocity(q, vm);
+    double rel[3] =
+        {p.u[0][i] - vm[0], p.u[1][i] - vm[1], p.u[2][i] - vm[2]};
+
+    // The relative velocity's tangential part, changed by the contact
+    // condition as the normal force's velocity change would
+    const double vn = dot3(rel, n);
+    const double dvn = -fn*dt/mu;
+    double vt[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        vt[d] = rel[d] - vn*n[d];
+        rel[d] = vt[d] + dvn*n[d];
+    }
+    condition_.apply(n, dvn, rel);
+    for (int d = 0; d < 3; ++d)
+    {
+        f[d] = fn*n[d] + mu*(rel[d] - vt[d])/dt;
+    }
+    dissipation_ += 0.5*mu*(dot3(vt, vt) - dot3(rel, rel));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::membraneContact::membraneContact
@@ -201,50 +256,20 @@ Foam::membraneContact::pushParticles
     for (size_t k = 0; k < near_.size(); ++k)
     {
         const label i = near_[k];
-        const double m = p.m[i];
-        // The particle's width along the membrane's normal and its face
-        const double V = m/stiffness.rho;
-        const double w = stiffness.width;
-        const double a = w > 0 ? std::sqrt(V/w) : std::cbrt(V);
-        const double face = w > 0 ? a*w : a*a;
-        const double delta = 0.5*a;
-        reach_[k] = delta;
-        const double gap = phi0_[k];
-        const membraneSurface::nearPoint& q = nearQ_[k];
-        if (gap >= delta || q.lateral2 > delta*delta)
+        double ms;
+        reach_[k] = reach(p.m[i], stiffness, ms);
+        const double overlap = reach_[k] - phi0_[k];
+        if (overlap <= 0 || nearQ_[k].lateral2 > sqr(reach_[k]))
         {
             continue;
         }
-        const double ms = arealMass_*face;
-        const double mu = m*ms/(m + ms);
-        const double kp = mu*omega*omega;
-        const double fn = kp*(delta - gap);
-        energy_ += 0.5*fn*(delta - gap);
-
-        // The relative velocity's tangential part, changed by the contact
-        // condition as the normal force's velocity change would
-        const double n[3] = {side_[k]*q.n[0], side_[k]*q.n[1], side_[k]*q.n[2]};
-        double vm[3];
-        surface.velocity(q, vm);
-        double rel[3] =
-            {p.u[0][i] - vm[0], p.u[1][i] - vm[1], p.u[2][i] - vm[2]};
-        const double vn = dot3(rel, n);
-        const double dvn = -fn*dt/mu;
-        double vt[3];
-        for (int d = 0; d < 3; ++d)
-        {
-            vt[d] = rel[d] - vn*n[d];
-            rel[d] = vt[d] + dvn*n[d];
-        }
-        condition_.apply(n, dvn, rel);
+        const double mu = p.m[i]*ms/(p.m[i] + ms);
+        const double fn = mu*omega*omega*overlap;
+        energy_ += 0.5*fn*overlap;
         push pi;
         pi.particle = i;
-        pi.q = q;
-        for (int d = 0; d < 3; ++d)
-        {
-            pi.f[d] = fn*n[d] + mu*(rel[d] - vt[d])/dt;
-        }
-        dissipation_ += 0.5*mu*(dot3(vt, vt) - dot3(rel, rel));
+        pi.q = nearQ_[k];
+        contactForce(k, surface, p, mu, fn, dt, pi.f);
         force_ -= vector(pi.f[0], pi.f[1], pi.f[2]);
         pushes_.push_back(pi);
     }

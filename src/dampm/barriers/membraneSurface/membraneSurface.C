@@ -188,7 +188,8 @@ void Foam::membraneSurface::setSpheres()
         }
         for (int k = 0; k < 3; ++k)
         {
-            const double e[3] = {v[k][0] - c[0], v[k][1] - c[1], v[k][2] - c[2]};
+            const double e[3] =
+                {v[k][0] - c[0], v[k][1] - c[1], v[k][2] - c[2]};
             r2 = std::max(r2, dot3(e, e));
         }
         radius_[t] = std::sqrt(r2);

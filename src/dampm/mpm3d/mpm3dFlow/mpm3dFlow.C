@@ -891,8 +891,9 @@ void Foam::mpm3dFlow::pushFromMembranes
     {
         const std::vector<membraneContact::push>& pushes =
             m.pushParticles(g, p, stencilNodes_, stiffness, dt);
-        // Through the grid as the particles' weight goes (few particles:
-        // in order, the same on any number of threads)
+        // External forces, scattered to the nodes by the shape functions'
+        // weights (few particles: in order, the same on any number of
+        // threads)
         visitKernel
         (
             [&](const auto& kernel)
