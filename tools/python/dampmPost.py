@@ -1,5 +1,5 @@
-"""dampm post-processing helpers: read OpenFOAM ASCII point fields and mesh
-points, the suite's postProcessing .dat time series, and the analytic
+"""dampm post-processing helpers: read OpenFOAM point fields, clouds and mesh
+points (ASCII or binary), the suite's postProcessing .dat time series, and the analytic
 solutions the tutorials and tests compare against.
 
 Used by the tutorials' plot scripts, tests/cases and benchmarks; put
@@ -36,30 +36,87 @@ def _list_after(text, start):
     return n, values
 
 
+# Components of an OpenFOAM field class's element, most specific first
+_COMPONENTS = (("symmtensor2d", 3), ("tensor2d", 4), ("symmtensor", 6), ("sphericaltensor", 1),
+               ("tensor", 9), ("vector2d", 2), ("vector", 3), ("label", 1), ("scalar", 1))
+
+
+class _FoamFile:
+    """An OpenFOAM file: its FoamFile header and its bytes. Binary files
+    (format binary) hold their lists as blocks of bytes, 'N(' then N
+    elements then ')', with labels and scalars of the header's arch."""
+
+    def __init__(self, path):
+        self.path = path
+        with open(path, "rb") as f:
+            self.data = f.read()
+        self.body = self.data.index(b"}") + 1
+        header = self.data[:self.body].decode("latin-1")
+        self.binary = re.search(r"format\s+binary\s*;", header) is not None
+        m = re.search(r"class\s+([\w<>]+)\s*;", header)
+        self.cls = m.group(1).lower() if m else ""
+        arch = re.search(r"label\s*=\s*(\d+)", header)
+        self.label = "<i%d" % (int(arch.group(1)) // 8) if arch else "<i4"
+
+    def components(self):
+        for name, k in _COMPONENTS:
+            if name in self.cls:
+                return k
+        raise ValueError("%s: no field type in class %s" % (self.path, self.cls))
+
+    def positions(self, start):
+        """A binary Cloud<passiveParticle>'s positions: N x 4, the position
+        and the cell (as ASCII lists them), from '(' the position and the
+        cell ')' per particle."""
+        m = re.compile(rb"(\d+)\s*\(").search(self.data, start)
+        n = int(m.group(1))
+        record = np.dtype([("open", "S1"), ("x", "<f8", 3), ("cell", self.label), ("close", "S1"),
+                           ("nl", "S1")])
+        first = self.data.index(b"(", m.end()) if n else m.end()
+        r = np.frombuffer(self.data, dtype=record, count=n, offset=first)
+        return n, np.column_stack([r["x"], r["cell"]]).ravel()
+
+    def list_after(self, start):
+        """Element count and values (flat) of the first list at or after
+        the byte offset start."""
+        if not self.binary:
+            text = self.data.decode("latin-1")
+            return _list_after(text, start)
+        if self.cls.startswith("cloud<"):
+            return self.positions(start)
+        m = re.compile(rb"(\d+)\s*([({])").search(self.data, start)
+        if not m:
+            raise ValueError("%s: no list found" % self.path)
+        n = int(m.group(1))
+        if m.group(2) == b"{":
+            return _list_after(self.data[m.start():].decode("latin-1"), 0)
+        k = self.components()
+        dtype = self.label if "label" in self.cls else "<f8"
+        values = np.frombuffer(self.data, dtype=dtype, count=n * k, offset=m.end())
+        return n, values.astype(float)
+
+
 def read_points(case):
     """Mesh points (N x 3) of constant/polyMesh/points."""
-    with open(os.path.join(case, "constant", "polyMesh", "points")) as f:
-        text = f.read()
-    n, v = _list_after(text, text.index("}"))
+    f = _FoamFile(os.path.join(case, "constant", "polyMesh", "points"))
+    n, v = f.list_after(f.body)
     return v.reshape(n, 3)
 
 
 def read_field(case, time, name, region="", cloud=None):
     """Internal values of a field (scalar: N, vector: N x 3) written at a
-    time; cloud names a lagrangian cloud. Uniform fields are expanded to
-    None (callers know the size)."""
+    time, ASCII or binary; cloud names a lagrangian cloud. A uniform field
+    is an error (callers know the size)."""
     parts = [case, str(time)]
     if cloud:
         parts += ["lagrangian", cloud]
     path = os.path.join(*parts, name)
-    with open(path) as f:
-        text = f.read()
-    body = text[text.index("}") + 1:]
-    key = body.find("internalField")
-    start = key if key >= 0 else 0
-    if key >= 0 and "nonuniform" not in body[key:key + 60]:
+    f = _FoamFile(path)
+    key = f.data.find(b"internalField", f.body)
+    start = key if key >= 0 else f.body
+    if key >= 0 and b"nonuniform" not in f.data[key:key + 60]:
         raise ValueError("%s is uniform" % path)
-    n, v = _list_after(body, start)
+    n, v = f.list_after(start)
     return v.reshape(n, -1) if v.size != n else v
 
 
@@ -139,10 +196,7 @@ def structure_points(case, name):
 
 def cloud_positions(case, time, cloud):
     """Particle positions (N x 3) of a lagrangian cloud written at a time."""
-    with open(os.path.join(case, str(time), "lagrangian", cloud, "positions")) as f:
-        text = f.read()
-    n, v = _list_after(text, text.index("}") + 1)
-    return v.reshape(n, 4)[:, :3]
+    return read_field(case, time, "positions", cloud=cloud).reshape(-1, 4)[:, :3]
 
 
 def elastic_cloud_energy(case, time, E, nu, h, cloud="mpm3dCloud"):

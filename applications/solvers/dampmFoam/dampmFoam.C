@@ -119,6 +119,8 @@ int main(int argc, char *argv[])
         progress.update(Info, runTime, timers);
     }
 
+    // The event's hazard maps as rasters, once, at the end
+    timers.run(stepTimers::IO, [&]{ hazard.writeRasters(); });
     if (!handOff3D.ended())
     {
         handOff3D.reportNotDue(Info);

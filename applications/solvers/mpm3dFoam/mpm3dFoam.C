@@ -112,6 +112,11 @@ int main(int argc, char *argv[])
         progress.update(Info, runTime, timers);
     }
 
+    // The event's hazard maps as rasters, once, at the end
+    if (eventMaps)
+    {
+        timers.run(stepTimers::IO, [&]{ eventMaps->writeRasters(runTime); });
+    }
     #include "reportBarriers.H"
     timers.report(Info);
     runTime.printExecutionTime(Info);

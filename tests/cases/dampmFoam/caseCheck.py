@@ -34,10 +34,7 @@ def cloud(case, time, name):
 
 
 def positions(case, time):
-    path = os.path.join(case, str(time), "lagrangian", "dampmCloud", "positions")
-    text = open(path).read()
-    n, v = dp._list_after(text, text.index("}") + 1)
-    return v.reshape(n, 4)[:, :3]
+    return dp.cloud_positions(case, time, "dampmCloud")
 
 
 def cellSize(case="."):

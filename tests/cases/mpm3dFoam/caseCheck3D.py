@@ -66,10 +66,7 @@ def cloud(case, time, name):
 
 
 def _positions(case, time):
-    path = os.path.join(case, str(time), "lagrangian", cloudName, "positions")
-    text = open(path).read()
-    n, v = dp._list_after(text, text.index("}") + 1)
-    return v.reshape(n, 4)
+    return dp.read_field(case, time, "positions", cloud=cloudName).reshape(-1, 4)
 
 
 def positions(case, time):

@@ -7,9 +7,10 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    Hazard maps: the maxima over time at the grid nodes, exported in the
-    terrain's map coordinates as ESRI ASCII and, for a GeoTIFF terrain, as a
-    GeoTIFF that reads back with the same values and georeference.
+    Hazard maps: the maxima over time at the grid nodes, exported at the
+    end of the run (not with the point fields) in the terrain's map
+    coordinates as ESRI ASCII and, for a GeoTIFF terrain, as a GeoTIFF that reads back with the
+    same values and georeference.
 
 \*---------------------------------------------------------------------------*/
 
@@ -95,9 +96,12 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
         }
         maps.update(nodes, g.allNodes());
     }
+    // The point fields at write times, the rasters at the end
     maps.write();
-
     const fileName out = dir/"postProcessing"/"hazardMaps"/"2.5";
+    ASSERT_FALSE(isDir(out));
+    maps.writeRasters();
+
     ASSERT_TRUE(isFile(out/"maxHeight.asc"));
     ASSERT_TRUE(isFile(out/"maxHeight.tif"))
         << "no GeoTIFF for a GeoTIFF terrain";

@@ -9,6 +9,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "runOutMaps.H"
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include "exactPrecision.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -128,7 +131,11 @@ void Foam::runOutMaps::update(const particleArrays& particles)
         }
     });
 
-    // Bilinear scatter (serial: once per step onto a 2D grid)
+    // Bilinear scatter in bands of node rows, a thread each (the bands
+    // split last step's rows of the flow): every thread reads the
+    // particles' y, and adds those with a node in its band, in particle
+    // order, so that every node's sums are those of one thread whatever
+    // the number of threads
     const label n = particles.size();
     const double* x = particles.component(particleArrays::X);
     const double* y = particles.component(particleArrays::Y);
@@ -136,31 +143,69 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     const double* uy = particles.component(particleArrays::UY);
     const double* m = particles.component(particleArrays::M);
     const double* V = particles.component(particleArrays::VOL);
+    const int32_t nRows = g.nCells[1] + 1;
+    const bool flowed = !active_.empty();
+    const int32_t split0 = flowed ? active_.lo[1] - gridGeometry::nGhost : 0;
+    const int32_t split1 = flowed ? active_.hi[1] - gridGeometry::nGhost : nRows;
     int32_t lo[2] = {g.nCells[0], g.nCells[1]}, hi[2] = {0, 0};
-    for (label p = 0; p < n; ++p)
+    #pragma omp parallel
     {
-        const double xi = g.local(0, x[p]), eta = g.local(1, y[p]);
-        if (!(xi >= 0 && xi <= g.nCells[0] && eta >= 0 && eta <= g.nCells[1]))
+        int tid = 0, nThreads = 1;
+        #ifdef _OPENMP
+        tid = omp_get_thread_num();
+        nThreads = omp_get_num_threads();
+        #endif
+        const int32_t r0 =
+            tid ? split0 + (split1 - split0)*tid/nThreads : 0;
+        const int32_t r1 = tid + 1 < nThreads
+          ? split0 + (split1 - split0)*(tid + 1)/nThreads
+          : nRows;
+        int32_t bandLo[2] = {g.nCells[0], g.nCells[1]}, bandHi[2] = {0, 0};
+        for (label p = 0; p < n; ++p)
         {
-            continue;
+            const double eta = g.local(1, y[p]);
+            if (!(eta >= 0 && eta <= g.nCells[1]))
+            {
+                continue;
+            }
+            const int32_t j = std::min(int32_t(eta), g.nCells[1] - 1);
+            if (j + 1 < r0 || j >= r1)
+            {
+                continue;
+            }
+            const double xi = g.local(0, x[p]);
+            if (!(xi >= 0 && xi <= g.nCells[0]))
+            {
+                continue;
+            }
+            const int32_t i = std::min(int32_t(xi), g.nCells[0] - 1);
+            const double fx = xi - i, fy = eta - j;
+            const double w[4] =
+                {(1 - fx)*(1 - fy), fx*(1 - fy), (1 - fx)*fy, fx*fy};
+            for (int c = 0; c < 4; ++c)
+            {
+                const int32_t row = j + (c >> 1);
+                if (row < r0 || row >= r1)
+                {
+                    continue;
+                }
+                const label node = g.nodeIndex(i + (c & 1), row, 0);
+                mass_[node] += w[c]*m[p];
+                px_[node] += w[c]*m[p]*ux[p];
+                py_[node] += w[c]*m[p]*uy[p];
+                volume_[node] += w[c]*V[p];
+            }
+            bandLo[0] = std::min(bandLo[0], i);
+            bandLo[1] = std::min(bandLo[1], j);
+            bandHi[0] = std::max(bandHi[0], i + 2);
+            bandHi[1] = std::max(bandHi[1], j + 2);
         }
-        const int32_t i = std::min(int32_t(xi), g.nCells[0] - 1);
-        const int32_t j = std::min(int32_t(eta), g.nCells[1] - 1);
-        const double fx = xi - i, fy = eta - j;
-        const double w[4] =
-            {(1 - fx)*(1 - fy), fx*(1 - fy), (1 - fx)*fy, fx*fy};
-        for (int c = 0; c < 4; ++c)
+        #pragma omp critical(runOutMapsBounds)
+        for (int d = 0; d < 2; ++d)
         {
-            const label node = g.nodeIndex(i + (c & 1), j + (c >> 1), 0);
-            mass_[node] += w[c]*m[p];
-            px_[node] += w[c]*m[p]*ux[p];
-            py_[node] += w[c]*m[p]*uy[p];
-            volume_[node] += w[c]*V[p];
+            lo[d] = std::min(lo[d], bandLo[d]);
+            hi[d] = std::max(hi[d], bandHi[d]);
         }
-        lo[0] = std::min(lo[0], i);
-        lo[1] = std::min(lo[1], j);
-        hi[0] = std::max(hi[0], i + 2);
-        hi[1] = std::max(hi[1], j + 2);
     }
 
     active_ = nodeBox();
@@ -205,13 +250,18 @@ void Foam::runOutMaps::update(const particleArrays& particles)
 }
 
 
-void Foam::runOutMaps::write(const Time& runTime3D)
+void Foam::runOutMaps::writeRasters(const Time& runTime3D) const
 {
     maps_->writeRasters
     (
         runTime3D.globalPath()/"postProcessing"/"hazardMaps"
        /runTime3D.timeName()
     );
+}
+
+
+void Foam::runOutMaps::write()
+{
     // Exactly: dictionary entries keep a value as printed
     const exactPrecision exact;
     maps_->saveMaxima(dict_());

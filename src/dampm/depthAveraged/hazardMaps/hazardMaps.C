@@ -192,7 +192,11 @@ void Foam::hazardMaps::write()
     {
         grid_.nodeToPoint(maxima_[k].data(), fields_[k]->primitiveFieldRef());
     }
+}
 
+
+void Foam::hazardMaps::writeRasters() const
+{
     const Time& runTime = grid_.mesh().time();
     writeRasters
     (

@@ -230,7 +230,9 @@ bool Foam::ensembleMember::mapsAtEnd(string& why) const
     const scalar endTime = dictionary(is).get<scalar>("endTime");
     const fileName maps(mapsDir());
     const scalar last = maps.empty() ? -GREAT : readScalar(maps.name());
-    if (mag(last - endTime) <= 1e-5*max(mag(endTime), 1e-4))
+    // At endTime, or the step past it that ends the run when endTime is
+    // no write time
+    if (last >= endTime - 1e-5*max(mag(endTime), 1e-4))
     {
         return true;
     }
@@ -238,7 +240,7 @@ bool Foam::ensembleMember::mapsAtEnd(string& why) const
         "its last hazard maps are "
       + (maps.empty() ? "none" : "of time " + maps.name())
       + ", not of endTime " + Foam::name(endTime)
-      + " (make endTime a write time)";
+      + " (the run ended before it)";
     return false;
 }
 

@@ -13,19 +13,31 @@ License
 #include "OSspecific.H"
 #include <charconv>
 
+// * * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * //
+
+int Foam::fastOFstream::numberText
+(
+    char buffer[numberSize],
+    const double val,
+    const int precision
+)
+{
+    return std::to_chars
+    (
+        buffer, buffer + numberSize, val, std::chars_format::general,
+        precision
+    ).ptr - buffer;
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Type>
 void Foam::fastOFstream::writeNumber(const Type val)
 {
-    // As std::ostream: a float as the double it converts to, %.<p>g
-    char buffer[64];
-    const std::to_chars_result end = std::to_chars
-    (
-        buffer, buffer + sizeof(buffer), double(val),
-        std::chars_format::general, precision()
-    );
-    put(buffer, end.ptr - buffer);
+    // As std::ostream: a float as the double it converts to
+    char buffer[numberSize];
+    put(buffer, numberText(buffer, double(val), precision()));
 }
 
 

@@ -10,7 +10,6 @@ License
 
 #include "timeSeriesFile.H"
 #include "fastOFstream.H"
-#include "OStringStream.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -80,14 +79,23 @@ void Foam::timeSeriesFile::write(const UList<scalar>& row)
     }
     // Formatted first and written in one piece: a failed write (a full
     // disk) comes to checkWritten, not to OpenFOAM's own stream check
-    OStringStream line;
-    line.precision(os_->precision());
+    const int precision = os_->precision();
+    char buffer[fastOFstream::numberSize];
+    line_.clear();
     forAll(row, i)
     {
-        line << (i ? " " : "") << row[i];
+        if (i)
+        {
+            line_ += ' ';
+        }
+        line_.append
+        (
+            buffer, fastOFstream::numberText(buffer, row[i], precision)
+        );
     }
+    line_ += '\n';
     std::ostream& os = os_->stdStream();
-    os  << line.str() << '\n';
+    os.write(line_.data(), line_.size());
     os.flush();
     checkWritten();
 }

@@ -24,6 +24,7 @@ License
 #include <cstdlib>
 #include <limits>
 #include <type_traits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -883,9 +884,13 @@ void Foam::terrainRaster::writeAsc(const fileName& file) const
     }
     out << "NODATA_value " << exactText(writtenNoData) << '\n';
 
+    // A row's text written at once: std::ostream's checks once per row,
+    // not twice per number
     char buf[32];
+    std::string row;
     for (label j = ny_ - 1; j >= 0; --j)
     {
+        row.clear();
         for (label i = 0; i < nx_; ++i)
         {
             const scalar v = values_[i + nx_*j];
@@ -895,11 +900,12 @@ void Foam::terrainRaster::writeAsc(const fileName& file) const
             );
             if (i)
             {
-                out << ' ';
+                row += ' ';
             }
-            out.write(buf, res.ptr - buf);
+            row.append(buf, res.ptr);
         }
-        out << '\n';
+        row += '\n';
+        out.write(row.data(), row.size());
     }
     out.flush();
     if (!out.good())
