@@ -9,9 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "runOutMaps.H"
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include "threadTeam.H"
 #include "exactPrecision.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -150,11 +148,8 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     int32_t lo[2] = {g.nCells[0], g.nCells[1]}, hi[2] = {0, 0};
     #pragma omp parallel
     {
-        int tid = 0, nThreads = 1;
-        #ifdef _OPENMP
-        tid = omp_get_thread_num();
-        nThreads = omp_get_num_threads();
-        #endif
+        const threadTeam team = thisThread();
+        const int tid = team.index, nThreads = team.size;
         const int32_t r0 =
             tid ? split0 + (split1 - split0)*tid/nThreads : 0;
         const int32_t r1 = tid + 1 < nThreads
