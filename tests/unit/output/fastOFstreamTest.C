@@ -9,8 +9,10 @@ License
 Description
     fastOFstream writes what OFstream writes, byte for byte (a list of
     20,000 doubles of every magnitude, signed zeros, denormals, infinities,
-    and floats, at precisions 6, 12, 16 and 17), and counts lines as
-    OFstream does; OpenFOAM's reader reads 200,000 normal doubles within
+    and floats, at precisions 6, 12, 16 and 17; and numbers between words,
+    labels, changes of precision, short, uniform and long lists, longer
+    than the tape it formats in parallel), and counts lines as OFstream
+    does; OpenFOAM's reader reads 200,000 normal doubles within
     1e+-290 written at exactPrecision back as the same doubles.
 
 \*---------------------------------------------------------------------------*/
@@ -19,6 +21,7 @@ Description
 #include "fastOFstream.H"
 #include "exactPrecision.H"
 #include "scalarList.H"
+#include "vectorField.H"
 #include "OSspecific.H"
 #include "IFstream.H"
 #include <gtest/gtest.h>
@@ -112,6 +115,46 @@ TEST(fastOFstream, WritesWhatOFstreamWritesByteForByte)
         EXPECT_EQ(linesFast, linesSlow);
         EXPECT_GT(linesFast, label(values.size()));
     }
+}
+
+
+TEST(fastOFstream, MixedContentKeepsItsOrderAcrossTheTape)
+{
+    // Numbers between words, labels, a change of precision, short and
+    // uniform lists, and a list longer than the tape holds at once
+    const fileName dir(scratchDir("fastOFstream"));
+    mkDir(dir);
+    vectorField points(600000);
+    forAll(points, i)
+    {
+        points[i] = vector(0.1*i, -1.0/(i + 1), std::sqrt(double(i)));
+    }
+    auto write = [&](Ostream& os)
+    {
+        os  << "points" << token::SPACE << points << token::END_STATEMENT
+            << nl << label(42) << token::SPACE << 1.5 << token::SPACE
+            << word("word") << nl;
+        os.precision(6);
+        os  << scalarList({1.0/3, 2.0/3, 1.0}) << token::SPACE
+            << scalarList(20, 0.25) << nl << 1.0/7 << nl;
+        os.precision(17);
+        os  << 1.0/7 << nl;
+        os.indent();
+        os  << vector(1, 2, 3) << endl;
+    };
+    label linesSlow, linesFast;
+    {
+        OFstream os(dir/"mixedSlow");
+        write(os);
+        linesSlow = os.lineNumber();
+    }
+    {
+        fastOFstream os(dir/"mixedFast");
+        write(os);
+        linesFast = os.lineNumber();
+    }
+    EXPECT_EQ(contents(dir/"mixedFast"), contents(dir/"mixedSlow"));
+    EXPECT_EQ(linesFast, linesSlow);
 }
 
 

@@ -11,7 +11,9 @@ License
 #include "fastOFstream.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include <algorithm>
 #include <charconv>
+#include <string>
 
 // * * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * //
 
@@ -32,12 +34,61 @@ int Foam::fastOFstream::numberText
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class Type>
-void Foam::fastOFstream::writeNumber(const Type val)
+namespace
 {
-    // As std::ostream: a float as the double it converts to
-    char buffer[numberSize];
-    put(buffer, numberText(buffer, double(val), precision()));
+
+// Tape entries formatted by one thread; a longer tape is written first
+constexpr std::size_t chunkSize = 1 << 16;
+constexpr std::size_t tapeSize = 1 << 22;
+
+} // End anonymous namespace
+
+
+void Foam::fastOFstream::drain()
+{
+    const std::size_t n = tape_.size();
+    if (!n)
+    {
+        return;
+    }
+    // Each chunk's first number: the numbers of the chunks before it
+    const std::size_t nChunks = (n + chunkSize - 1)/chunkSize;
+    std::vector<std::size_t> first(nChunks + 1, 0);
+    for (std::size_t c = 0; c < nChunks; ++c)
+    {
+        const std::size_t end = std::min(n, (c + 1)*chunkSize);
+        first[c + 1] = first[c]
+          + std::count(tape_.begin() + c*chunkSize, tape_.begin() + end, 0);
+    }
+
+    std::vector<std::string> text(nChunks);
+    const int p = precision();
+    #pragma omp parallel for schedule(static) if (nChunks > 1)
+    for (std::size_t c = 0; c < nChunks; ++c)
+    {
+        std::string& t = text[c];
+        t.reserve(20*chunkSize);
+        char buffer[numberSize];
+        std::size_t k = first[c];
+        const std::size_t end = std::min(n, (c + 1)*chunkSize);
+        for (std::size_t i = c*chunkSize; i < end; ++i)
+        {
+            if (tape_[i])
+            {
+                t += tape_[i];
+            }
+            else
+            {
+                t.append(buffer, numberText(buffer, numbers_[k++], p));
+            }
+        }
+    }
+    tape_.clear();
+    numbers_.clear();
+    for (const std::string& t : text)
+    {
+        put(t.data(), t.size());
+    }
 }
 
 
@@ -81,9 +132,22 @@ bool Foam::fastOFstream::writeObject
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::fastOFstream::~fastOFstream()
+{
+    drain();
+}
+
+
 Foam::Ostream& Foam::fastOFstream::write(const char c)
 {
-    put(&c, 1);
+    if (tape_.empty())
+    {
+        put(&c, 1);
+    }
+    else
+    {
+        tape_.push_back(c);
+    }
     if (c == token::NL)
     {
         ++lineNumber_;
@@ -94,15 +158,148 @@ Foam::Ostream& Foam::fastOFstream::write(const char c)
 
 Foam::Ostream& Foam::fastOFstream::write(const doubleScalar val)
 {
-    writeNumber(val);
+    if (format() == BINARY)
+    {
+        return OFstream::write(val);
+    }
+    tape_.push_back(0);
+    numbers_.push_back(val);
+    if (tape_.size() >= tapeSize)
+    {
+        drain();
+    }
     return *this;
 }
 
 
 Foam::Ostream& Foam::fastOFstream::write(const floatScalar val)
 {
-    writeNumber(val);
-    return *this;
+    // As std::ostream: a float as the double it converts to
+    return write(doubleScalar(val));
+}
+
+
+bool Foam::fastOFstream::write(const token& tok)
+{
+    drain();
+    return OFstream::write(tok);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write(const char* str)
+{
+    drain();
+    return OFstream::write(str);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write(const word& str)
+{
+    drain();
+    return OFstream::write(str);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write(const string& str)
+{
+    drain();
+    return OFstream::write(str);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::writeQuoted
+(
+    const std::string& str,
+    const bool quoted
+)
+{
+    drain();
+    return OFstream::writeQuoted(str, quoted);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write(const int32_t val)
+{
+    drain();
+    return OFstream::write(val);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write(const int64_t val)
+{
+    drain();
+    return OFstream::write(val);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::write
+(
+    const char* data,
+    std::streamsize count
+)
+{
+    drain();
+    return OFstream::write(data, count);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::writeRaw
+(
+    const char* data,
+    std::streamsize count
+)
+{
+    drain();
+    return OFstream::writeRaw(data, count);
+}
+
+
+bool Foam::fastOFstream::beginRawWrite(std::streamsize count)
+{
+    drain();
+    return OFstream::beginRawWrite(count);
+}
+
+
+bool Foam::fastOFstream::endRawWrite()
+{
+    drain();
+    return OFstream::endRawWrite();
+}
+
+
+void Foam::fastOFstream::indent()
+{
+    drain();
+    OFstream::indent();
+}
+
+
+void Foam::fastOFstream::flush()
+{
+    drain();
+    OFstream::flush();
+}
+
+
+void Foam::fastOFstream::endl()
+{
+    drain();
+    OFstream::endl();
+}
+
+
+int Foam::fastOFstream::precision(const int p)
+{
+    drain();
+    return OFstream::precision(p);
+}
+
+
+std::ostream& Foam::fastOFstream::stdStream()
+{
+    drain();
+    return OFstream::stdStream();
 }
 
 
