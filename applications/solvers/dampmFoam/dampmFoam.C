@@ -120,7 +120,7 @@ int main(int argc, char *argv[])
     }
 
     // The event's hazard maps as rasters, once, at the end
-    timers.run(stepTimers::IO, [&]{ hazard.writeRasters(); });
+    timers.run(stepTimers::IO, [&]{ hazard.writeRasters(runTime); });
     if (!handOff3D.ended())
     {
         handOff3D.reportNotDue(Info);

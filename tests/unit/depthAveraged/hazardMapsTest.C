@@ -100,7 +100,7 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
     maps.write();
     const fileName out = dir/"postProcessing"/"hazardMaps"/"2.5";
     ASSERT_FALSE(isDir(out));
-    maps.writeRasters();
+    maps.writeRasters(grid.mesh().time());
 
     ASSERT_TRUE(isFile(out/"maxHeight.asc"));
     ASSERT_TRUE(isFile(out/"maxHeight.tif"))

@@ -144,7 +144,8 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     const int32_t nRows = g.nCells[1] + 1;
     const bool flowed = !active_.empty();
     const int32_t split0 = flowed ? active_.lo[1] - gridGeometry::nGhost : 0;
-    const int32_t split1 = flowed ? active_.hi[1] - gridGeometry::nGhost : nRows;
+    const int32_t split1 =
+        flowed ? active_.hi[1] - gridGeometry::nGhost : nRows;
     int32_t lo[2] = {g.nCells[0], g.nCells[1]}, hi[2] = {0, 0};
     #pragma omp parallel
     {
@@ -247,11 +248,7 @@ void Foam::runOutMaps::update(const particleArrays& particles)
 
 void Foam::runOutMaps::writeRasters(const Time& runTime3D) const
 {
-    maps_->writeRasters
-    (
-        runTime3D.globalPath()/"postProcessing"/"hazardMaps"
-       /runTime3D.timeName()
-    );
+    maps_->writeRasters(runTime3D);
 }
 
 

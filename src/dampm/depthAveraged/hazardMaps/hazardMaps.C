@@ -195,18 +195,12 @@ void Foam::hazardMaps::write()
 }
 
 
-void Foam::hazardMaps::writeRasters() const
+void Foam::hazardMaps::writeRasters(const Time& runTime) const
 {
-    const Time& runTime = grid_.mesh().time();
-    writeRasters
+    const fileName dir
     (
         runTime.globalPath()/"postProcessing"/"hazardMaps"/runTime.timeName()
     );
-}
-
-
-void Foam::hazardMaps::writeRasters(const fileName& dir) const
-{
     mkDir(dir);
     for (int k = 0; k < nMaps; ++k)
     {

@@ -51,6 +51,28 @@ void Foam::fastOFstream::drain()
     {
         return;
     }
+    const int p = precision();
+    char buffer[numberSize];
+    if (n <= chunkSize)
+    {
+        // One chunk: straight into the stream, nothing to share
+        std::size_t k = 0;
+        for (const char c : tape_)
+        {
+            if (c)
+            {
+                put(&c, 1);
+            }
+            else
+            {
+                put(buffer, numberText(buffer, numbers_[k++], p));
+            }
+        }
+        tape_.clear();
+        numbers_.clear();
+        return;
+    }
+
     // Each chunk's first number: the numbers of the chunks before it
     const std::size_t nChunks = (n + chunkSize - 1)/chunkSize;
     std::vector<std::size_t> first(nChunks + 1, 0);
@@ -62,16 +84,15 @@ void Foam::fastOFstream::drain()
     }
 
     std::vector<std::string> text(nChunks);
-    const int p = precision();
-    #pragma omp parallel for schedule(static) if (nChunks > 1)
+    #pragma omp parallel for schedule(static) private(buffer)
     for (std::size_t c = 0; c < nChunks; ++c)
     {
+        const std::size_t begin = c*chunkSize;
+        const std::size_t end = std::min(n, begin + chunkSize);
         std::string& t = text[c];
-        t.reserve(20*chunkSize);
-        char buffer[numberSize];
+        t.reserve(20*(end - begin));
         std::size_t k = first[c];
-        const std::size_t end = std::min(n, (c + 1)*chunkSize);
-        for (std::size_t i = c*chunkSize; i < end; ++i)
+        for (std::size_t i = begin; i < end; ++i)
         {
             if (tape_[i])
             {
@@ -95,7 +116,8 @@ void Foam::fastOFstream::drain()
 void Foam::fastOFstream::put(const char* data, const std::streamsize n)
 {
     // The stream buffer itself: no sentry, no state check per character
-    std::ostream& os = stdStream();
+    // (OFstream's stream: this class's stdStream writes the tape first)
+    std::ostream& os = OFstream::stdStream();
     if (os.rdbuf()->sputn(data, n) != n)
     {
         os.setstate(std::ios::badbit);
