@@ -103,13 +103,27 @@ def read_points(case):
     return v.reshape(n, 3)
 
 
+def processors(case):
+    """The processor directories of a decomposed case, in rank order."""
+    found = []
+    for d in os.listdir(case):
+        if d.startswith("processor") and d[9:].isdigit():
+            found.append((int(d[9:]), d))
+    return [os.path.join(case, d) for _, d in sorted(found)]
+
+
 def read_field(case, time, name, region="", cloud=None):
     """Internal values of a field (scalar: N, vector: N x 3) written at a
     time, ASCII or binary; cloud names a lagrangian cloud. A uniform field
-    is an error (callers know the size)."""
+    is an error (callers know the size). The cloud of a decomposed case
+    (no cloud at the case's own time) is every processor's in rank order."""
     parts = [case, str(time)]
     if cloud:
         parts += ["lagrangian", cloud]
+        if not os.path.isdir(os.path.join(*parts)) and processors(case):
+            pieces = [read_field(p, time, name, cloud=cloud) for p in processors(case)]
+            held = [v for v in pieces if v.size]
+            return np.concatenate(held) if held else pieces[0]
     path = os.path.join(*parts, name)
     f = _FoamFile(path)
     key = f.data.find(b"internalField", f.body)
@@ -117,6 +131,8 @@ def read_field(case, time, name, region="", cloud=None):
     if key >= 0 and b"nonuniform" not in f.data[key:key + 60]:
         raise ValueError("%s is uniform" % path)
     n, v = f.list_after(start)
+    if n == 0:
+        return v
     return v.reshape(n, -1) if v.size != n else v
 
 

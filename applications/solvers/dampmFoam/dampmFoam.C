@@ -34,10 +34,12 @@ Description
 
 #include "fvCFD.H"
 #include "mpmTime.H"
+#include "rankThreads.H"
 #include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
 #include "strictIOdictionary.H"
+#include "localIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "particleCloudIO.H"
 #include "hazardMaps.H"
@@ -88,7 +90,10 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::P2G, [&]{ flow.computeForces(); });
         timers.run(stepTimers::grid, [&]{ flow.updateGrid(dt); });
         timers.run(stepTimers::G2P, [&]{ flow.gridToParticles(dt); });
-        timers.countStep(flow.particles().size());
+        timers.countStep
+        (
+            returnReduce(flow.particles().size(), sumOp<label>())
+        );
 
         timers.run(stepTimers::IO, [&]
         {
@@ -124,6 +129,14 @@ int main(int argc, char *argv[])
     if (!handOff3D.ended())
     {
         handOff3D.reportNotDue(Info);
+    }
+    if (Pstream::parRun())
+    {
+        Info<< "Columns moved between processors: "
+            << flow.migration().nMoved() << nl
+            << "Communication (node sums, moves; in P2G and G2P): "
+            << returnReduce(grid.decomposition().commTime(), maxOp<scalar>())
+            << " s on the slowest processor" << nl << endl;
     }
     timers.report(Info);
     runTime.printExecutionTime(Info);

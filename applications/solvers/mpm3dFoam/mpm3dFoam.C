@@ -37,10 +37,12 @@ Description
 
 #include "fvCFD.H"
 #include "mpmTime.H"
+#include "rankThreads.H"
 #include "exactPrecision.H"
 #include "pointFields.H"
 #include "mpmGrid.H"
 #include "strictIOdictionary.H"
+#include "localIOdictionary.H"
 #include "mpm3dFlow.H"
 #include "particleCloudIO.H"
 #include "timeSeriesFile.H"
@@ -62,6 +64,14 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "mpm3dFoam runs on one processor: -parallel is refused (the"
+            << " 3D grid is not split across processors). Run it without"
+            << " -parallel on the undecomposed case (reconstructPar first)"
+            << exit(FatalError);
+    }
     const word solverName("mpm3dFoam");
     #include "createMPMTime.H"
     #include "createMesh.H"

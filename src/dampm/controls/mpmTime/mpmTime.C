@@ -11,7 +11,7 @@ License
 #include "mpmTime.H"
 #include <cmath>
 #include "argList.H"
-#include "IOdictionary.H"
+#include "localIOdictionary.H"
 #include "IFstream.H"
 #include "OStringStream.H"
 #include "OSspecific.H"
@@ -46,7 +46,9 @@ void Foam::mpmTime::catchStopSignals()
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
     action.sa_handler = catchStop;
-    for (const int sig : {SIGTERM, SIGINT})
+    // SIGUSR1 too: mpirun forwards it to every process (a SIGTERM to
+    // mpirun kills them)
+    for (const int sig : {SIGTERM, SIGINT, SIGUSR1})
     {
         sigaction(sig, &action, nullptr);
     }
@@ -82,15 +84,9 @@ void Foam::mpmTime::checkStartTime()
     }
     const directoryState s =
         here < 0 ? state(dir) : state(path(), all, here);
-    if (s == directoryState::complete)
+    if (s != directoryState::incomplete)
     {
-        startWriter_ = writer(dir);
-        lastComplete_ = timeName();
-        continueRun();
-        return;
-    }
-    if (s == directoryState::fresh)
-    {
+        startAt(all, s == directoryState::fresh ? -2 : -1);
         return;
     }
 
@@ -128,7 +124,79 @@ void Foam::mpmTime::checkStartTime()
         << " or the disk was full). Starting from " << all[previous].name()
         << ", the last complete time directory; " << timeName()
         << " is written again when the run reaches it" << nl << endl;
-    this->startFrom(all[previous]);
+    startAt(all, previous);
+}
+
+
+void Foam::mpmTime::startAt(const instantList& all, const label from)
+{
+    if (Pstream::parRun())
+    {
+        agreeStartTime(all, from);
+    }
+    else if (from >= 0)
+    {
+        this->startFrom(all[from]);
+    }
+    else if (from == -1)
+    {
+        continueStart();
+    }
+}
+
+
+void Foam::mpmTime::continueStart()
+{
+    startWriter_ = writer(timePath());
+    lastComplete_ = timeName();
+    continueRun();
+}
+
+
+void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
+{
+    // A processor stopped while writing has an earlier complete time than
+    // the others: all of them start from the earliest start. Time::setTime
+    // reads collectively: either every processor continues its own start
+    // directory or every one starts from the common time
+    const scalar mine = from >= 0 ? all[from].value() : value();
+    const scalar common = returnReduce(mine, minOp<scalar>());
+    const bool own = from < 0 && instant(mine).equal(common);
+    if (returnReduce(own, andOp<bool>()))
+    {
+        if (from == -1)
+        {
+            continueStart();
+        }
+        return;
+    }
+    forAll(all, i)
+    {
+        if
+        (
+            all[i].name() != constant() && all[i].equal(common)
+         && state(path(), all, i) == directoryState::complete
+        )
+        {
+            if (!instant(mine).equal(common))
+            {
+                WarningInFunction
+                    << "processor" << Pstream::myProcNo() << " starts from"
+                    << " time " << all[i].name() << " instead of "
+                    << (from >= 0 ? all[from].name() : timeName()) << ": the"
+                    << " latest time directory complete on every processor"
+                    << nl << endl;
+            }
+            this->startFrom(all[i]);
+            return;
+        }
+    }
+    FatalErrorInFunction
+        << "time " << common << " (the latest start of every processor) is"
+        << " not a complete time directory of " << path() << ": the"
+        << " processors' time directories do not match. Decompose the case"
+        << " again (decomposePar -force) from a complete time"
+        << exit(FatalError);
 }
 
 
@@ -214,7 +282,7 @@ Foam::fileNameList Foam::mpmTime::cutShort
 
 bool Foam::mpmTime::writeRecord() const
 {
-    IOdictionary record
+    localIOdictionary record
     (
         IOobject
         (
@@ -462,11 +530,22 @@ void Foam::mpmTime::exitIfStopped() const
 
 Foam::Time& Foam::mpmTime::operator++()
 {
-    if (stopSignal_ && !stopAnnounced_)
+    // Every processor of a decomposed run stops at the same step
+    label signal = stopSignal_;
+    if (Pstream::parRun())
     {
+        reduce(signal, maxOp<label>());
+    }
+    if (signal && !stopAnnounced_)
+    {
+        stopSignal_ = signal;
         stopAnnounced_ = true;
         Info<< nl << "Caught signal " << int(stopSignal_) << " ("
-            << (stopSignal_ == SIGTERM ? "SIGTERM" : "SIGINT") << "): this"
+            << (
+                   stopSignal_ == SIGTERM ? "SIGTERM"
+                 : stopSignal_ == SIGINT ? "SIGINT" : "SIGUSR1"
+               )
+            << "): this"
             << " step is the last, and it is written" << nl << endl;
         stopAt(stopAtControls::saWriteNow);
     }

@@ -133,7 +133,11 @@ void Foam::mpmTimeControls::checkControlDict
     const bool run
 )
 {
-    const fileName file = caseDir/"system"/Time::controlDictName;
+    // A processor directory of a decomposed case (-parallel): the case's
+    // controlDict, the processor's time directories
+    const bool processor = caseDir.name().starts_with("processor");
+    const fileName file =
+        (processor ? caseDir.path() : caseDir)/"system"/Time::controlDictName;
     if (!isFile(file))
     {
         // Time names the missing file

@@ -85,13 +85,31 @@ Foam::depthAveragedDiagnostics::totals Foam::depthAveragedDiagnostics::sum
         terrain
     );
 
+    // Over every processor of a decomposed run (its sums in rank order)
+    label nTotal = n;
+    if (Pstream::parRun())
+    {
+        List<scalar> S({sums[0], sums[1], scalar(n)});
+        List<scalar> mx(7);
+        std::copy_n(maxima, 7, mx.begin());
+        Pstream::listCombineGather(S, plusEqOp<scalar>());
+        Pstream::listCombineScatter(S);
+        Pstream::listCombineGather(mx, maxEqOp<scalar>());
+        Pstream::listCombineScatter(mx);
+        sums[0] = S[0];
+        sums[1] = S[1];
+        nTotal = label(S[2]);
+        std::copy_n(mx.begin(), 7, maxima);
+    }
+
     totals t;
     t.mass = sums[0];
     t.kineticEnergy = sums[1];
     t.maxSpeed = std::sqrt(max(maxima[0], 0.0));
     t.maxHorizontalSpeed = std::sqrt(max(maxima[5], 0.0));
     t.finite = !(maxima[6] > 0);
-    t.extent = n
+    t.nColumns = nTotal;
+    t.extent = nTotal
         ? boundBox
           (
               point(-maxima[1], -maxima[3], 0),

@@ -138,7 +138,7 @@ Foam::scalar Foam::depthAveragedFlow::maxColumnThickness() const
         const double area = std::abs(F[0][i]*F[3][i] - F[1][i]*F[2][i]);
         hMax = area > 0 && V[i]/area > hMax ? V[i]/area : hMax;
     }
-    return hMax;
+    return returnReduce(hMax, maxOp<scalar>());
 }
 
 
@@ -156,7 +156,11 @@ Foam::scalar Foam::depthAveragedFlow::speedScale() const
         hMax = max(hMax, hi);
     }
     const auto range = std::minmax_element(nodes_.Z.begin(), nodes_.Z.end());
-    const double relief = *range.second - *range.first;
+    const double relief =
+        returnReduce(*range.second, maxOp<scalar>())
+      - returnReduce(*range.first, minOp<scalar>());
+    reduce(wave, maxOp<scalar>());
+    reduce(hMax, maxOp<scalar>());
     return wave + std::sqrt(2*g_*(relief + hMax));
 }
 
@@ -264,10 +268,43 @@ void Foam::depthAveragedFlow::seedRelease
     Info<< "Release: ";
     release->describe(Info);
     Info<< endl;
+    const gridDecomposition& parts = grid_.decomposition();
+    if (!parts.active())
+    {
+        depthAveragedSeeding
+        (
+            grid_.geometry(), nPerCell_, rho_, hMin_, releaseProjection_
+        ).seed(*release, *shape_, nodes_.area.data(), particles_, fields_);
+        return;
+    }
+
+    // Decomposed: every processor seeds the whole release, as a serial run
+    // does (the projection and its volume balance reach across parts), and
+    // keeps the columns in its own cells
+    const gridGeometry domain = grid_.geometry().domain();
+    std::vector<double> area(domain.nNodes());
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            nodalAreas(domain, kernel, nPerCell_, area.data());
+        }
+    );
     depthAveragedSeeding
     (
-        grid_.geometry(), nPerCell_, rho_, hMin_, releaseProjection_
-    ).seed(*release, *shape_, nodes_.area.data(), particles_, fields_);
+        domain, nPerCell_, rho_, hMin_, releaseProjection_
+    ).seed(*release, *shape_, area.data(), particles_, fields_);
+
+    const label n = particles_.size();
+    const double* x = particles_.component(particleArrays::X);
+    const double* y = particles_.component(particleArrays::Y);
+    std::vector<char> elsewhere(n);
+    for (label i = 0; i < n; ++i)
+    {
+        elsewhere[i] = !parts.holds(x[i], y[i], 0);
+    }
+    particles_.removeFlagged(elsewhere);
 }
 
 
@@ -278,7 +315,7 @@ void Foam::depthAveragedFlow::setStartDefaults()
     {
         mMax = max(mMax, particles_.component(particleArrays::M)[i]);
     }
-    massTol_ = 1e-12*mMax;
+    massTol_ = 1e-12*returnReduce(mMax, maxOp<scalar>());
     releaseThickness_ = speedLimit::threeDigits(maxColumnThickness());
     splitting_.setDefaultHMin(maxColumnThickness());
     speedLimit_.setDefault(speedScale());
@@ -304,6 +341,7 @@ void Foam::depthAveragedFlow::detectFlatBed()
     {
         terrainFree_ = nodes_.Z[n] == 0;
     }
+    reduce(terrainFree_, andOp<bool>());
     if (terrainFree_)
     {
         const label n = particles_.size();
@@ -342,6 +380,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
             pressureFormType::gradient
         )
     ),
+    migration_(grid.decomposition()),
     fields_(particles_),
     splitting_(dict, grid.geometry(), nPerCell_, hMin_),
     schedule_(grid.geometry()),
@@ -361,7 +400,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     );
     checkInput(dict);
 
-    const fileName caseDir = grid.mesh().time().path();
+    const fileName caseDir = grid.mesh().time().globalPath();
     selectModels(dict, caseDir);
     {
         bool wall[3][2];
@@ -388,7 +427,8 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
     const gridGeometry& g = grid_.geometry();
     const char* sideNames[2][2] = {{"x min", "x max"}, {"y min", "y max"}};
     os  << "dampmFoam physics (terms not listed as active cost nothing):" << nl
-        << "    columns         " << particles_.size() << ", "
+        << "    columns         "
+        << returnReduce(particles_.size(), sumOp<label>()) << ", "
         << nPerCell_*nPerCell_ << " per cell, rho = " << rho_ << " kg/m^3"
         << nl << "    shape function  ";
     shape_->describe(os);
@@ -422,7 +462,8 @@ void Foam::depthAveragedFlow::describe(Ostream& os) const
                 << (sides_.wall[d][s] ? "wall" : "open") << ';';
         }
     }
-    os  << nl << "    grid            " << g.nCells[0] << " x " << g.nCells[1]
+    os  << nl << "    grid            " << g.nCellsDomain[0] << " x "
+        << g.nCellsDomain[1]
         << " cells of " << g.dx[0] << " x " << g.dx[1] << " m" << endl;
 }
 
@@ -464,12 +505,18 @@ void Foam::depthAveragedFlow::particlesToGrid()
         return;
     }
     const gridGeometry& g = grid_.geometry();
+    const gridDecomposition& parts = grid_.decomposition();
     particles_.sortByCell(g, schedule_.maxStale());
 
     // Work on the nodes the columns touch, and clear those of last step
+    // (decomposed: also every node a neighbour's columns may add to)
     activeNodes_ = stencilNodes_;
     stencilNodes_ = particles_.stencilNodes(g);
     activeNodes_.unite(stencilNodes_);
+    if (parts.active())
+    {
+        activeNodes_.unite(parts.reach());
+    }
     zeroNodes(g, activeNodes_, nodes_);
 
     const shallowColumns cols = columns();
@@ -485,6 +532,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
             scatterMomentum(scatter, kernel, nodes_, cols);
         }
     );
+    parts.sumNodes(nodes_.momentum.data(), shallowGrid::nMomentum);
     nodeHeights
     (
         g, activeNodes_, nodes_, rho_, massTol_, slopeCorrection_,
@@ -523,6 +571,10 @@ void Foam::depthAveragedFlow::particlesToGrid()
             );
         }
     );
+    if (forcesDone_)
+    {
+        parts.sumNodes(nodes_.loads.data(), shallowGrid::nLoads);
+    }
     prepared_ = true;
 }
 
@@ -575,6 +627,8 @@ Foam::scalar Foam::depthAveragedFlow::stableDeltaT
         }
     }
 
+    reduce(maxWave, maxOp<scalar>());
+    reduce(maxElastic, maxOp<scalar>());
     const scalar delta = min(g.dx[0], g.dx[1]);
     scalar dt = maxWave > 0 ? maxCo*delta/maxWave : GREAT;
     limit = "wave";
@@ -655,6 +709,7 @@ void Foam::depthAveragedFlow::computeForces()
             );
         }
     );
+    grid_.decomposition().sumNodes(nodes_.loads.data(), shallowGrid::nLoads);
 }
 
 
@@ -730,7 +785,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         {
             const double eps = 1e-6*g.dx[d];
             const double lo = g.origin[d];
-            const double hi = g.upper(d);
+            const double hi = g.domainUpper(d);
             if (*pos[d] < lo || *pos[d] > hi)
             {
                 const int s = *pos[d] > hi;
@@ -771,6 +826,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         rheology_->stress(modelView(), dt);
     }
     splitting_.split(particles_, fields_, nRemoved == 0);
+    migration_.migrate(particles_);
     prepared_ = false;
     return removed;
 }

@@ -68,7 +68,7 @@ Foam::splitRule Foam::depthAveragedSplitting::rule() const
     {
         r.cell[d] = geometry_.dx[d];
         r.lo[d] = geometry_.origin[d];
-        r.hi[d] = geometry_.upper(d);
+        r.hi[d] = geometry_.domainUpper(d);
     }
     return r;
 }

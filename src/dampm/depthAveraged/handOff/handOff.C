@@ -248,11 +248,6 @@ bool Foam::handOff::due
             depth.append(h[i]);
         }
     }
-    if (bed.empty())
-    {
-        return false;
-    }
-
     const pointField pts(std::move(bed));
     scalar nearest = GREAT;
     label nearestPoint = -1, nearestBody = -1;
@@ -271,14 +266,42 @@ bool Foam::handOff::due
             }
         }
     }
+
+    // The nearest of every processor's front (the lowest rank of equals):
+    // its column, depth and body go to all
+    List<scalar> found({nearest, 0, 0, 0, 0, scalar(nearestBody)});
+    if (nearestPoint >= 0)
+    {
+        found[1] = pts[nearestPoint].x();
+        found[2] = pts[nearestPoint].y();
+        found[3] = pts[nearestPoint].z();
+        found[4] = depth[nearestPoint];
+    }
+    if (Pstream::parRun())
+    {
+        const scalar least = returnReduce(nearest, minOp<scalar>());
+        const label from = returnReduce
+        (
+            nearest == least ? Pstream::myProcNo() : Pstream::nProcs(),
+            minOp<label>()
+        );
+        if (Pstream::myProcNo() != from)
+        {
+            found = 0;
+        }
+        Pstream::listCombineGather(found, plusEqOp<scalar>());
+        Pstream::listCombineScatter(found);
+    }
+    nearest = found[0];
     nearest_ = min(nearest_, nearest);
     if (nearest > distance_)
     {
         return false;
     }
 
-    trigger3D_ = pts[nearestPoint];
-    triggerDepth_ = depth[nearestPoint];
+    trigger3D_ = point(found[1], found[2], found[3]);
+    triggerDepth_ = found[4];
+    nearestBody = label(found[5]);
     OStringStream os;
     os  << max(nearest, 0.0) << " m from " << region_[nearestBody].name()
         << " of the 3D region (hand-off distance " << distance_ << " m)";
@@ -306,7 +329,23 @@ Foam::string Foam::handOff::reason(const particleArrays& columns) const
         }
     }
     OStringStream os;
-    os  << "the front, column " << index << " of the cloud at (x y) = ("
+    os  << "the front, column ";
+    if (Pstream::parRun())
+    {
+        // The processor whose cloud holds it
+        const label proc = returnReduce
+        (
+            index >= 0 ? Pstream::myProcNo() : Pstream::nProcs(),
+            minOp<label>()
+        );
+        reduce(index, maxOp<label>());
+        os  << index << " of processor" << proc << "'s cloud";
+    }
+    else
+    {
+        os  << index << " of the cloud";
+    }
+    os  << " at (x y) = ("
         << trigger3D_.x() << ' ' << trigger3D_.y() << "), " << triggerDepth_
         << " m deep (frontDepth " << frontDepth_ << " m), is "
         << reason_.c_str();

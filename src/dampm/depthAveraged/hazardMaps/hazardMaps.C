@@ -71,16 +71,15 @@ void Foam::hazardMaps::writeRaster
     const std::vector<double>& values
 ) const
 {
+    // The whole domain's nodes, on the master (which alone writes)
     const gridGeometry& g = grid_.geometry();
-    const label nx = g.nCells[0] + 1;
-    const label ny = g.nCells[1] + 1;
-    scalarList samples(nx*ny);
-    for (label j = 0; j < ny; ++j)
+    const label nx = g.nCellsDomain[0] + 1;
+    const label ny = g.nCellsDomain[1] + 1;
+    scalarList samples;
+    grid_.decomposition().gatherLattice(values.data(), samples);
+    if (!Pstream::master())
     {
-        for (label i = 0; i < nx; ++i)
-        {
-            samples[i + nx*j] = values[g.nodeIndex(i, j, 0)];
-        }
+        return;
     }
     const terrainRaster* terrain = topography_.raster();
     const terrainRaster raster
@@ -201,7 +200,10 @@ void Foam::hazardMaps::writeRasters(const Time& runTime) const
     (
         runTime.globalPath()/"postProcessing"/"hazardMaps"/runTime.timeName()
     );
-    mkDir(dir);
+    if (Pstream::master())
+    {
+        mkDir(dir);
+    }
     for (int k = 0; k < nMaps; ++k)
     {
         writeRaster(dir, names[k], maxima_[k]);

@@ -11,6 +11,7 @@ License
 #include "mpmGrid.H"
 #include "emptyPolyPatch.H"
 #include "wallPolyPatch.H"
+#include "processorPolyPatch.H"
 #include "boundBox.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -84,17 +85,20 @@ void Foam::mpmGrid::detectEmpty(const label n[3])
 void Foam::mpmGrid::setGeometry()
 {
     const pointField& pts = mesh_.points();
-    if (mesh_.nCells() == 0)
+    if (returnReduce(mesh_.nCells(), minOp<label>()) == 0)
     {
         notStructured("it has no cells");
     }
-    const boundBox bb(pts, false);
+    // The whole domain's box: on a decomposed case the same numbers as the
+    // undecomposed mesh's, so the lattice is that of a serial run
+    const boundBox localBb(pts, false);
+    const boundBox bb(pts, true);
 
     // The spacing from the first cell's bounding box; the lattice checks
     // below catch any other cell size
     const boundBox cellBb(pts, mesh_.cellPoints()[0], false);
 
-    label n[3];
+    label n[3], nOwn[3];
     for (direction d = 0; d < 3; ++d)
     {
         geom_.origin[d] = bb.min()[d];
@@ -117,10 +121,27 @@ void Foam::mpmGrid::setGeometry()
         // Spacing from the whole span: less round-off than one cell
         geom_.dx[d] = bb.span()[d]/n[d];
         geom_.nCells[d] = n[d];
+        nOwn[d] = label(std::round(localBb.span()[d]/geom_.dx[d]));
+        ownLo_[d] =
+            label(std::round((localBb.min()[d] - bb.min()[d])/geom_.dx[d]));
     }
 
-    if (label(n[0])*n[1]*n[2] != mesh_.nCells())
+    if (label(nOwn[0])*nOwn[1]*nOwn[2] != mesh_.nCells())
     {
+        if (Pstream::parRun())
+        {
+            FatalErrorInFunction
+                << "processor " << Pstream::myProcNo() << " of the decomposed"
+                << " case " << mesh_.time().globalPath() << " holds "
+                << mesh_.nCells() << " cells that are not one box of the"
+                << " structured grid (its bounding box spans " << nOwn[0]
+                << " x " << nOwn[1] << " x " << nOwn[2] << " cells): dampm"
+                << " runs on boxes only. In system/decomposeParDict use"
+                << " method simple or hierarchical with subdomain counts n"
+                << " that divide the cell counts (" << n[0] << ' ' << n[1]
+                << ' ' << n[2] << "); allowed methods: simple, hierarchical"
+                << exit(FatalError);
+        }
         notStructured
         (
             "it has " + Foam::name(mesh_.nCells()) + " cells, but its bounding"
@@ -130,8 +151,36 @@ void Foam::mpmGrid::setGeometry()
         );
     }
 
-    detectEmpty(n);
+    detectEmpty(nOwn);
+    setPart(nOwn);
     geom_.finalise();
+}
+
+
+void Foam::mpmGrid::setPart(const label nOwn[3])
+{
+    // Serial: the part is the domain
+    for (int d = 0; d < 3; ++d)
+    {
+        ownHi_[d] = ownLo_[d] + nOwn[d];
+    }
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // A part: its own cells and one cell more on each side that another
+    // processor holds, so that every node its particles reach (one beyond
+    // its cells' nodes) has its full-width neighbours (terrain gradients)
+    geom_.decomposed = true;
+    for (int d = 0; d < 3; ++d)
+    {
+        geom_.nCellsDomain[d] = geom_.nCells[d];
+        const label lo = (d < geom_.dim && ownLo_[d] > 0) ? 1 : 0;
+        const label hi = (d < geom_.dim && ownHi_[d] < geom_.nCells[d]) ? 1 : 0;
+        geom_.offset[d] = ownLo_[d] - lo;
+        geom_.nCells[d] = nOwn[d] + lo + hi;
+    }
 }
 
 
@@ -139,8 +188,8 @@ void Foam::mpmGrid::mapPoints()
 {
     const pointField& pts = mesh_.points();
     const label nLattice =
-        (geom_.nCells[0] + 1)*(geom_.nCells[1] + 1)
-       *(is2D() ? 2 : geom_.nCells[2] + 1);
+        (ownHi_[0] - ownLo_[0] + 1)*(ownHi_[1] - ownLo_[1] + 1)
+       *(is2D() ? 2 : ownHi_[2] - ownLo_[2] + 1);
     if (pts.size() != nLattice)
     {
         notStructured
@@ -168,7 +217,11 @@ void Foam::mpmGrid::mapPoints()
                 );
             }
         }
-        pointNode_[pointi] = geom_.nodeIndex(ijk[0], ijk[1], ijk[2]);
+        pointNode_[pointi] = geom_.nodeIndex
+        (
+            ijk[0] - geom_.offset[0], ijk[1] - geom_.offset[1],
+            ijk[2] - geom_.offset[2]
+        );
     }
 }
 
@@ -207,7 +260,11 @@ void Foam::mpmGrid::mapCells()
               + Foam::name(V[celli]) + " instead of " + Foam::name(cellVol)
             );
         }
-        const label sc = geom_.cellIndex(ijk[0], ijk[1], is2D() ? 0 : ijk[2]);
+        const label sc = geom_.cellIndex
+        (
+            ijk[0] - geom_.offset[0], ijk[1] - geom_.offset[1],
+            is2D() ? 0 : ijk[2] - geom_.offset[2]
+        );
         if (meshCell_[sc] != -1)
         {
             notStructured
@@ -231,12 +288,13 @@ Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
     setGeometry();
     mapPoints();
     mapCells();
+    decomposition_.reset(new gridDecomposition(*this));
 
-    Info<< "mpmGrid: " << (is2D() ? "2D " : "3D ")
-        << geom_.nCells[0] << " x " << geom_.nCells[1];
+    const label* n = geom_.nCellsDomain;
+    Info<< "mpmGrid: " << (is2D() ? "2D " : "3D ") << n[0] << " x " << n[1];
     if (!is2D())
     {
-        Info<< " x " << geom_.nCells[2];
+        Info<< " x " << n[2];
     }
     Info<< " cells, spacing (" << geom_.dx[0] << ' ' << geom_.dx[1];
     if (!is2D())
@@ -250,8 +308,16 @@ Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
             << " x-z, " << geom_.dx[1] << " m across";
     }
     Info<< ", origin (" << geom_.origin[0] << ' ' << geom_.origin[1] << ' '
-        << geom_.origin[2] << "), " << nNodes() << " nodes with ghosts"
-        << endl;
+        << geom_.origin[2] << ")";
+    if (Pstream::parRun())
+    {
+        Info<< ", decomposed into " << Pstream::nProcs() << " boxes";
+    }
+    else
+    {
+        Info<< ", " << nNodes() << " nodes with ghosts";
+    }
+    Info<< endl;
 }
 
 
@@ -286,11 +352,12 @@ Foam::point Foam::mpmGrid::nodePosition(const label nodei) const
 void Foam::mpmGrid::wallSides(bool wall[3][2]) const
 {
     const gridGeometry& g = geom_;
-    // Sides with faces of a wall patch (+1) or another patch (+2)
-    int kinds[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    // Sides of the domain with faces of a wall patch (+1) or another patch
+    // (+2), over every processor's patches
+    labelList kinds(6, Zero);
     for (const polyPatch& pp : mesh_.boundaryMesh())
     {
-        if (isA<emptyPolyPatch>(pp))
+        if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp))
         {
             continue;
         }
@@ -302,21 +369,23 @@ void Foam::mpmGrid::wallSides(bool wall[3][2]) const
                 const scalar tol = 1e-6*g.dx[d];
                 if (mag(c[d] - g.origin[d]) < tol)
                 {
-                    kinds[d][0] |= kind;
+                    kinds[2*d] |= kind;
                 }
-                if (mag(c[d] - g.upper(d)) < tol)
+                if (mag(c[d] - g.domainUpper(d)) < tol)
                 {
-                    kinds[d][1] |= kind;
+                    kinds[2*d + 1] |= kind;
                 }
             }
         }
     }
+    Pstream::listCombineGather(kinds, bitOrEqOp<label>());
+    Pstream::listCombineScatter(kinds);
     const char* axes = "xyz";
     for (int d = 0; d < 3; ++d)
     {
         for (int s = 0; s < 2; ++s)
         {
-            if (kinds[d][s] == 3)
+            if (kinds[2*d + s] == 3)
             {
                 FatalErrorInFunction
                     << "the " << axes[d] << (s ? " max" : " min")
@@ -324,7 +393,7 @@ void Foam::mpmGrid::wallSides(bool wall[3][2]) const
                     << " patches; allowed: one type per side (see"
                     << " system/blockMeshDict)" << exit(FatalError);
             }
-            wall[d][s] = (kinds[d][s] == 1);
+            wall[d][s] = (kinds[2*d + s] == 1);
         }
     }
 }

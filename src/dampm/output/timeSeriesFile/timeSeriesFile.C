@@ -24,17 +24,25 @@ Foam::timeSeriesFile::timeSeriesFile
     const word& timeName
 )
 :
-    columns_(columns)
-{
-    const fileName dir =
+    columns_(columns),
+    path_
+    (
         runTime.globalPath()/"postProcessing"/name
        /(
             timeName.empty()
           ? runTime.timeName(runTime.startTime().value())
           : timeName
-        );
+        )/(file + ".dat")
+    )
+{
+    // Written once, by the master, on a decomposed run as on a serial one
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName dir = path_.path();
     mkDir(dir);
-    os_.reset(new fastOFstream(dir/(file + ".dat")));
+    os_.reset(new fastOFstream(path_));
     os_->precision(16);
 
     OFstream& os = *os_;
@@ -71,6 +79,10 @@ void Foam::timeSeriesFile::checkWritten() const
 
 void Foam::timeSeriesFile::write(const UList<scalar>& row)
 {
+    if (!os_)
+    {
+        return;
+    }
     if (row.size() != columns_.size())
     {
         FatalErrorInFunction

@@ -16,7 +16,7 @@ License
 #include "particle.H"
 #include "cloud.H"
 #include "IOField.H"
-#include "IOdictionary.H"
+#include "localIOdictionary.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "symmTensor.H"
@@ -64,7 +64,7 @@ Foam::IOobject Foam::particleCloudIO::fileIO
 
 bool Foam::particleCloudIO::writeCloudProperties() const
 {
-    IOdictionary props
+    localIOdictionary props
     (
         fileIO("cloudProperties", "uniform"/cloud::prefix/this->name())
     );
@@ -510,7 +510,7 @@ void Foam::particleCloudIO::checkCloud
                 << dir/"positions" << ": particle " << i << " lies outside"
                 << " the mesh at " << point(x[i], y[i], z[i]) << "; allowed:"
                 << " the mesh's box from "
-                << point(g.origin[0], g.origin[1], g.origin[2]) << " to "
+                << point(g.lower(0), g.lower(1), g.lower(2)) << " to "
                 << point(g.upper(0), g.upper(1), g.upper(2))
                 << (grid.is2D() ? " in x and y" : "") << " m. The cloud is"
                 << " corrupt or of another mesh" << exit(FatalError);
@@ -530,7 +530,7 @@ void Foam::particleCloudIO::readBins
     const word& cloudName
 )
 {
-    const IOdictionary props
+    const localIOdictionary props
     (
         IOobject
         (
@@ -637,7 +637,9 @@ bool Foam::particleCloudIO::readStartTime
             << " continued" << exit(FatalError);
     }
     read(particles, mesh, cloudName, timeName);
-    if (particles.size() == 0)
+    // (A processor of a decomposed run may hold none)
+    const label nTotal = returnReduce(particles.size(), sumOp<label>());
+    if (nTotal == 0)
     {
         FatalErrorInFunction
             << "cloud " << dir << " holds no particle: nothing to"
@@ -646,7 +648,7 @@ bool Foam::particleCloudIO::readStartTime
     }
     checkCloud(particles, grid, dir);
     readBins(particles, grid, cloudName);
-    Info<< "Read " << particles.size() << " particles of cloud " << cloudName
+    Info<< "Read " << nTotal << " particles of cloud " << cloudName
         << " at time " << timeName << endl;
     return true;
 }

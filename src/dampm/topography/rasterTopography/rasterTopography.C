@@ -95,8 +95,8 @@ void Foam::topographyModels::rasterTopography::checkCovers
     const scalar hi[2] = {cells.max().x(), cells.max().y()};
     const scalar beyond[4] =
     {
-        lo[0] - g.origin[0], g.upper(0) - hi[0],
-        lo[1] - g.origin[1], g.upper(1) - hi[1]
+        lo[0] - g.origin[0], g.domainUpper(0) - hi[0],
+        lo[1] - g.origin[1], g.domainUpper(1) - hi[1]
     };
     const scalar cell[4] = {r.dx(), r.dx(), r.dy(), r.dy()};
     const char* const sides[4] = {"west", "east", "south", "north"};
@@ -123,7 +123,7 @@ void Foam::topographyModels::rasterTopography::checkCovers
             << " to " << hi[1] << " m (local coordinates: map coordinates"
             << " minus the offset " << r.offset() << "), the mesh"
             << " (system/blockMeshDict) x " << g.origin[0] << " to "
-            << g.upper(0) << ", y " << g.origin[1] << " to " << g.upper(1)
+            << g.domainUpper(0) << ", y " << g.origin[1] << " to " << g.domainUpper(1)
             << " m, beyond the raster by " << where.c_str() << "; allowed: a"
             << " mesh within the raster's cells, give or take half a raster"
             << " cell (" << r.dx()/2 << " x " << r.dy()/2 << " m). Check the"

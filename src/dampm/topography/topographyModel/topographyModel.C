@@ -86,8 +86,11 @@ void Foam::topographyModel::sampleNodes
     {
         const label i = nodei % g.nodeStride[1] - nG;
         const label j = nodei/g.nodeStride[1] - nG;
+        const label iD = i + g.offset[0];
+        const label jD = j + g.offset[1];
         const bool ghost =
-            i < 0 || j < 0 || i > g.nCells[0] || j > g.nCells[1];
+            iD < 0 || jD < 0 || iD > g.nCellsDomain[0]
+         || jD > g.nCellsDomain[1];
         return
             "(x y) = (" + Foam::name(g.nodeCoord(0, i)) + ' '
           + Foam::name(g.nodeCoord(1, j)) + ')'

@@ -1,0 +1,89 @@
+"""The decomposition dampm runs with: each processor one box of the
+structured grid. For N processors the grid is cut into n = (nx ny 1) boxes,
+nx ny = N, as square as possible, of near-equal cell counts along each axis
+(whether or not N divides them); decomposePar takes the cut as method
+manual (constant/cellDecomposition)."""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dampmPost as dp  # noqa: E402
+
+
+def cell_counts(case):
+    """Cells of the case's uniform blockMesh grid along x, y and z."""
+    pts = dp.read_points(case)
+    return [len(np.unique(np.round(pts[:, k], 9))) - 1 for k in range(3)]
+
+
+def split(counts, nProcs):
+    """(nx, ny, 1) with nx ny = nProcs and at least one cell per box along
+    each axis, the boxes as square as possible (x cut first on a tie)."""
+    best = None
+    for nx in range(nProcs, 0, -1):
+        ny = nProcs // nx
+        if nx * ny != nProcs or nx > counts[0] or ny > counts[1]:
+            continue
+        a, b = counts[0] / nx, counts[1] / ny
+        aspect = max(a, b) / min(a, b)
+        if best is None or aspect < best[0]:
+            best = (aspect, nx, ny)
+    return None if best is None else (best[1], best[2], 1)
+
+
+def owners(counts, n):
+    """The processor of every cell (blockMesh order: x fastest)."""
+    cut = [np.arange(counts[d]) * n[d] // counts[d] for d in range(2)]
+    return (cut[0][None, :] + n[0] * cut[1][:, None]).ravel()
+
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+  dampm | Material Point Method for landslide run-out and barrier impact
+  Not approved or endorsed by OpenCFD Limited, owner of the OpenFOAM trademark.
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       %s;
+    object      %s;
+}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+DICT = """// Written by tools/python/decomposition.py: %(nProcs)d boxes, n (%(n)s), of
+// the %(cells)s grid (dampm runs on boxes of the grid only)
+numberOfSubdomains  %(nProcs)d;
+method              manual;
+coeffs
+{
+    dataFile    "cellDecomposition";
+}
+
+// ************************************************************************* //
+"""
+
+
+def write_dict(case, nProcs):
+    counts = cell_counts(case)
+    n = split(counts, nProcs)
+    if n is None:
+        sys.exit("decomposition: %d processors cannot each hold a box of the %d x %d cells of %s"
+                 % (nProcs, counts[0], counts[1], case))
+    cells = owners(counts, n)
+    with open(os.path.join(case, "constant", "cellDecomposition"), "w") as f:
+        f.write(HEADER % ("labelList", "cellDecomposition"))
+        f.write("%d\n(\n%s\n)\n" % (cells.size, "\n".join(map(str, cells))))
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write(HEADER % ("dictionary", "decomposeParDict"))
+        f.write(DICT % {"nProcs": nProcs, "n": " ".join(map(str, n)),
+                        "cells": " x ".join(map(str, counts[:2]))})
+    print("system/decomposeParDict: %d processors, boxes n (%s) of the %d x %d cells"
+          % (nProcs, " ".join(map(str, n)), counts[0], counts[1]))
+
+
+if __name__ == "__main__":
+    write_dict(sys.argv[2] if len(sys.argv) > 2 else ".", int(sys.argv[1]))
