@@ -34,9 +34,10 @@ volatile std::sig_atomic_t Foam::mpmTime::stopSignal_ = 0;
 void Foam::mpmTime::catchStop(int sig)
 {
     stopSignal_ = sig;
-    // A second signal, either of them, stops at once
+    // A second signal, any of them, stops at once
     std::signal(SIGTERM, SIG_DFL);
     std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGUSR1, SIG_DFL);
 }
 
 
@@ -159,6 +160,17 @@ void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
     // the others: all of them start from the earliest start. Time::setTime
     // reads collectively: either every processor continues its own start
     // directory or every one starts from the common time
+    const bool fresh = from == -2;
+    if (returnReduce(fresh, orOp<bool>()) != returnReduce(fresh, andOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "the start directory " << timeName() << " is "
+            << (fresh ? "fresh (no output)" : "written") << " on processor"
+            << Pstream::myProcNo() << " but not on every processor (a run"
+            << " killed while writing its start): remove the processors'"
+            << " time directories " << timeName() << " and start again"
+            << exit(FatalError);
+    }
     const scalar mine = from >= 0 ? all[from].value() : value();
     const scalar common = returnReduce(mine, minOp<scalar>());
     const bool own = from < 0 && instant(mine).equal(common);
@@ -641,6 +653,12 @@ bool Foam::mpmTime::writeObject
             << exit(FatalError);
     }
     lastComplete_ = timeName();
+    // Decomposed: older times go only once every processor has this one (a
+    // processor that failed has stopped the run before this point)
+    if (Pstream::parRun())
+    {
+        returnReduce(written, andOp<bool>());
+    }
     purgeOldTimes();
     return true;
 }

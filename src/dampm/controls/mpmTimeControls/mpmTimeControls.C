@@ -127,6 +127,43 @@ const IOstream& where(const dictionary& dict, const word& key)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
+void Foam::mpmTimeControls::sameLatestTime
+(
+    const fileName& caseDir,
+    const instantList& times
+)
+{
+    // OpenFOAM's Time starts every processor from its newest directory and
+    // stops when they differ; a run killed while writing leaves the newest
+    // on some processors only: say which, and what to do
+    List<word> latest(Pstream::nProcs());
+    latest[Pstream::myProcNo()] =
+        times.size() ? times.last().name() : word("none");
+    Pstream::gatherList(latest);
+    Pstream::scatterList(latest);
+    forAll(latest, p)
+    {
+        if (latest[p] != latest[0])
+        {
+            FatalErrorInFunction
+                << "the processors' newest time directories differ (";
+            forAll(latest, q)
+            {
+                FatalError<< (q ? ", " : "") << "processor" << q << ": "
+                    << latest[q];
+            }
+            FatalError
+                << ") in " << caseDir.path() << ". A run stopped while"
+                << " writing leaves"
+                << " its last time on some processors only, incomplete:"
+                << " move those directories away, then restart (startFrom"
+                << " latestTime falls back to the latest time complete on"
+                << " every processor)" << exit(FatalError);
+        }
+    }
+}
+
+
 void Foam::mpmTimeControls::checkControlDict
 (
     const fileName& caseDir,
@@ -135,7 +172,7 @@ void Foam::mpmTimeControls::checkControlDict
 {
     // A processor directory of a decomposed case (-parallel): the case's
     // controlDict, the processor's time directories
-    const bool processor = caseDir.name().starts_with("processor");
+    const bool processor = Pstream::parRun();
     const fileName file =
         (processor ? caseDir.path() : caseDir)/"system"/Time::controlDictName;
     if (!isFile(file))
@@ -169,6 +206,10 @@ void Foam::mpmTimeControls::checkControlDict
     if (startFrom != "startTime")
     {
         const instantList times = Time::findTimes(caseDir);
+        if (processor && startFrom == "latestTime")
+        {
+            sameLatestTime(caseDir, times);
+        }
         start = 0;
         if (startFrom == "firstTime" && times.size() > 1
          && times.first().name() == "constant")

@@ -44,8 +44,11 @@ void Foam::rankThreads::set(Ostream& os)
     const bool given = std::getenv("OMP_NUM_THREADS");
     if (!given)
     {
+        // OpenMP's default follows the process's CPU binding (mpirun binds
+        // each of 1 or 2 processes to a core): never more than it
         const label cores = max(label(std::thread::hardware_concurrency()), 1);
-        omp_set_num_threads(max(cores/localProcesses(), label(1)));
+        const label share = max(cores/localProcesses(), label(1));
+        omp_set_num_threads(min(share, label(omp_get_max_threads())));
     }
     os  << "Parallel run: " << Pstream::nProcs() << " processes x "
         << omp_get_max_threads() << " OpenMP threads"

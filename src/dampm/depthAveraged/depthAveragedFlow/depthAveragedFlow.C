@@ -305,6 +305,7 @@ void Foam::depthAveragedFlow::seedRelease
         elsewhere[i] = !parts.holds(x[i], y[i], 0);
     }
     particles_.removeFlagged(elsewhere);
+    particles_.shrink();
 }
 
 
@@ -509,14 +510,13 @@ void Foam::depthAveragedFlow::particlesToGrid()
     particles_.sortByCell(g, schedule_.maxStale());
 
     // Work on the nodes the columns touch, and clear those of last step
-    // (decomposed: also every node a neighbour's columns may add to)
+    // (decomposed: also the shared nodes a neighbour's columns reach)
     activeNodes_ = stencilNodes_;
+    activeNodes_.unite(sharedNodes_);
     stencilNodes_ = particles_.stencilNodes(g);
+    sharedNodes_ = parts.shareNodes(stencilNodes_);
     activeNodes_.unite(stencilNodes_);
-    if (parts.active())
-    {
-        activeNodes_.unite(parts.reach());
-    }
+    activeNodes_.unite(sharedNodes_);
     zeroNodes(g, activeNodes_, nodes_);
 
     const shallowColumns cols = columns();

@@ -108,7 +108,6 @@ void Foam::gridDecomposition::findNeighbours()
         }
         return b;
     };
-    reach_ = toLocal(myLo, myHi);
 
     forAll(boxes_, p)
     {
@@ -127,7 +126,8 @@ void Foam::gridDecomposition::findNeighbours()
         }
         if (overlaps)
         {
-            neighbours_.push_back({p, toLocal(lo, hi)});
+            const nodeBox overlap = toLocal(lo, hi);
+            neighbours_.push_back({p, overlap, overlap});
         }
     }
 }
@@ -150,7 +150,6 @@ Foam::gridDecomposition::gridDecomposition(const mpmGrid& grid)
     }
     if (!active())
     {
-        reach_ = geom_.allNodes();
         return;
     }
     Pstream::gatherList(boxes_);
@@ -186,6 +185,72 @@ bool Foam::gridDecomposition::holds
 }
 
 
+Foam::nodeBox Foam::gridDecomposition::shareNodes
+(
+    const nodeBox& stencils
+) const
+{
+    nodeBox shared;
+    if (!active())
+    {
+        return shared;
+    }
+    const auto start = std::chrono::steady_clock::now();
+
+    // Boxes in domain node indices: (local - ghost + offset)
+    const auto shift = [&](const int d)
+    {
+        return d < geom_.dim ? geom_.offset[d] - gridGeometry::nGhost : 0;
+    };
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    for (const neighbour& nb : neighbours_)
+    {
+        labelList box(6);
+        for (int d = 0; d < 3; ++d)
+        {
+            box[d] = stencils.lo[d] + shift(d);
+            box[3 + d] = stencils.hi[d] + shift(d);
+        }
+        UOPstream to(nb.proc, buffers);
+        to << box;
+    }
+    buffers.finishedSends();
+
+    // A neighbour's sum: the shared nodes either side's stencils reach
+    const auto clip = [](const nodeBox& a, const nodeBox& b)
+    {
+        nodeBox c;
+        for (int d = 0; d < 3; ++d)
+        {
+            c.lo[d] = a.lo[d] > b.lo[d] ? a.lo[d] : b.lo[d];
+            c.hi[d] = a.hi[d] < b.hi[d] ? a.hi[d] : b.hi[d];
+        }
+        return c;
+    };
+    for (const neighbour& nb : neighbours_)
+    {
+        UIPstream from(nb.proc, buffers);
+        const labelList box(from);
+        nodeBox theirs;
+        for (int d = 0; d < 3; ++d)
+        {
+            theirs.lo[d] = box[d] - shift(d);
+            theirs.hi[d] = box[3 + d] - shift(d);
+        }
+        nodeBox reached = clip(nb.overlap, stencils);
+        if (reached.empty())
+        {
+            reached = nodeBox();
+        }
+        reached.unite(clip(nb.overlap, theirs));
+        nb.sum = reached.empty() ? nodeBox() : reached;
+        shared.unite(nb.sum);
+    }
+    commTime_ += since(start);
+    return shared;
+}
+
+
 void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
 {
     if (!active())
@@ -201,11 +266,11 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     for (const neighbour& nb : neighbours_)
     {
-        scalarList send(nComp*nNodesIn(nb.overlap));
+        scalarList send(nComp*nNodesIn(nb.sum));
         label k = 0;
         forEachNode
         (
-            nb.overlap,
+            nb.sum,
             [&](const label n)
             {
                 for (int c = 0; c < nComp; ++c)
@@ -224,7 +289,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
     {
         forEachNode
         (
-            nb.overlap,
+            nb.sum,
             [&](const label n)
             {
                 std::fill_n(&acc_[nComp*n], nComp, 0.0);
@@ -237,7 +302,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
         {
             forEachNode
             (
-                nb.overlap,
+                nb.sum,
                 [&](const label n)
                 {
                     if (stamp_[n] != call_)
@@ -265,7 +330,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
         label k = 0;
         forEachNode
         (
-            nb.overlap,
+            nb.sum,
             [&](const label n)
             {
                 for (int c = 0; c < nComp; ++c)
@@ -283,7 +348,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
     {
         forEachNode
         (
-            nb.overlap,
+            nb.sum,
             [&](const label n)
             {
                 std::copy_n(&acc_[nComp*n], nComp, &values[nComp*n]);

@@ -139,7 +139,9 @@ void Foam::mpmGrid::setGeometry()
                 << " runs on boxes only. In system/decomposeParDict use"
                 << " method simple or hierarchical with subdomain counts n"
                 << " that divide the cell counts (" << n[0] << ' ' << n[1]
-                << ' ' << n[2] << "); allowed methods: simple, hierarchical"
+                << ' ' << n[2] << "), or the method manual that"
+                << " tools/python/decomposition.py writes for any count;"
+                << " allowed methods: simple, hierarchical, manual (boxes)"
                 << exit(FatalError);
         }
         notStructured

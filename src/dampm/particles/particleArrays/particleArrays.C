@@ -114,6 +114,20 @@ void Foam::particleArrays::reserve(const label n)
 }
 
 
+void Foam::particleArrays::shrink()
+{
+    for (componentArray& c : components_)
+    {
+        c.shrink_to_fit();
+    }
+    cell_.shrink_to_fit();
+    order_.clear();
+    order_.shrink_to_fit();
+    scratch_.clear();
+    scratch_.shrink_to_fit();
+}
+
+
 Foam::label Foam::particleArrays::append(const label n)
 {
     const label first = size_;

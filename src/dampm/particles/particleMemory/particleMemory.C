@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleMemory.H"
+#include "rankThreads.H"
 #include "error.H"
 #include <cmath>
 #include <fstream>
@@ -144,7 +145,8 @@ void Foam::particleMemory::reserve
     }
     const double perParticle = bytesPerParticle(particles);
     const double needed = n*perParticle;
-    const double free = available();
+    // The processes of a -parallel run on this machine share it
+    const double free = available()/rankThreads::localProcesses();
     const double total = particles.size() + n;
     if (total > labelMax || needed > free)
     {
@@ -153,7 +155,9 @@ void Foam::particleMemory::reserve
             << needed << " bytes needed (" << perParticle << " per particle: "
             << particles.nComponentArrays() << " component arrays of 8 bytes, sorting and work"
             << " arrays), " << free << " bytes available (MemAvailable of"
-            << " /proc/meminfo within ulimit -v and -d). Allowed: at most "
+            << " /proc/meminfo within ulimit -v and -d, over the "
+            << rankThreads::localProcesses() << " process(es) of the run on"
+            << " this machine). Allowed: at most "
             << min(std::floor(free/perParticle), double(labelMax))
             << " particles (and " << labelMax << " in all, 32-bit labels)"
             << exit(FatalError);
