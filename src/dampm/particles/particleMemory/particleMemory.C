@@ -155,9 +155,15 @@ void Foam::particleMemory::reserve
             << needed << " bytes needed (" << perParticle << " per particle: "
             << particles.nComponentArrays() << " component arrays of 8 bytes, sorting and work"
             << " arrays), " << free << " bytes available (MemAvailable of"
-            << " /proc/meminfo within ulimit -v and -d, over the "
-            << rankThreads::localProcesses() << " process(es) of the run on"
-            << " this machine). Allowed: at most "
+            << " /proc/meminfo within ulimit -v and -d)";
+        if (rankThreads::localProcesses() > 1)
+        {
+            FatalError
+                << " for one of the " << rankThreads::localProcesses()
+                << " processes of the run on this machine";
+        }
+        FatalError
+            << ". Allowed: at most "
             << min(std::floor(free/perParticle), double(labelMax))
             << " particles (and " << labelMax << " in all, 32-bit labels)"
             << exit(FatalError);
