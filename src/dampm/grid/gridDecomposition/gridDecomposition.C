@@ -10,7 +10,6 @@ License
 
 #include "gridDecomposition.H"
 #include "mpmGrid.H"
-#include "PstreamBuffers.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
 #include <chrono>
@@ -185,6 +184,42 @@ bool Foam::gridDecomposition::holds
 }
 
 
+void Foam::gridDecomposition::swap
+(
+    const List<scalarList>& send,
+    List<scalarList>& recv
+) const
+{
+    // Receives first, then sends, all non-blocking; sizes known both sides
+    const label requests = UPstream::nRequests();
+    forAll(neighbours_, k)
+    {
+        if (recv[k].size())
+        {
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking, neighbours_[k].proc,
+                reinterpret_cast<char*>(recv[k].data()),
+                recv[k].byteSize()
+            );
+        }
+    }
+    forAll(neighbours_, k)
+    {
+        if (send[k].size())
+        {
+            UOPstream::write
+            (
+                UPstream::commsTypes::nonBlocking, neighbours_[k].proc,
+                reinterpret_cast<const char*>(send[k].cdata()),
+                send[k].byteSize()
+            );
+        }
+    }
+    UPstream::waitRequests(requests);
+}
+
+
 Foam::nodeBox Foam::gridDecomposition::shareNodes
 (
     const nodeBox& stencils
@@ -202,19 +237,15 @@ Foam::nodeBox Foam::gridDecomposition::shareNodes
     {
         return d < geom_.dim ? geom_.offset[d] - gridGeometry::nGhost : 0;
     };
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const neighbour& nb : neighbours_)
+    scalarList box(6);
+    for (int d = 0; d < 3; ++d)
     {
-        labelList box(6);
-        for (int d = 0; d < 3; ++d)
-        {
-            box[d] = stencils.lo[d] + shift(d);
-            box[3 + d] = stencils.hi[d] + shift(d);
-        }
-        UOPstream to(nb.proc, buffers);
-        to << box;
+        box[d] = stencils.lo[d] + shift(d);
+        box[3 + d] = stencils.hi[d] + shift(d);
     }
-    buffers.finishedSends();
+    const List<scalarList> send(neighbours_.size(), box);
+    List<scalarList> recv(neighbours_.size(), scalarList(6));
+    swap(send, recv);
 
     // A neighbour's sum: the shared nodes either side's stencils reach
     const auto clip = [](const nodeBox& a, const nodeBox& b)
@@ -227,15 +258,14 @@ Foam::nodeBox Foam::gridDecomposition::shareNodes
         }
         return c;
     };
-    for (const neighbour& nb : neighbours_)
+    forAll(neighbours_, k)
     {
-        UIPstream from(nb.proc, buffers);
-        const labelList box(from);
+        const neighbour& nb = neighbours_[k];
         nodeBox theirs;
         for (int d = 0; d < 3; ++d)
         {
-            theirs.lo[d] = box[d] - shift(d);
-            theirs.hi[d] = box[3 + d] - shift(d);
+            theirs.lo[d] = label(recv[k][d]) - shift(d);
+            theirs.hi[d] = label(recv[k][3 + d]) - shift(d);
         }
         nodeBox reached = clip(nb.overlap, stencils);
         if (reached.empty())
@@ -263,10 +293,12 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
     ++call_;
 
     // This processor's partial sums on the nodes each neighbour shares
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (const neighbour& nb : neighbours_)
+    List<scalarList> send(neighbours_.size()), recv(neighbours_.size());
+    forAll(neighbours_, q)
     {
-        scalarList send(nComp*nNodesIn(nb.sum));
+        const neighbour& nb = neighbours_[q];
+        send[q].setSize(nComp*nNodesIn(nb.sum));
+        recv[q].setSize(send[q].size());
         label k = 0;
         forEachNode
         (
@@ -275,14 +307,12 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
             {
                 for (int c = 0; c < nComp; ++c)
                 {
-                    send[k++] = values[nComp*n + c];
+                    send[q][k++] = values[nComp*n + c];
                 }
             }
         );
-        UOPstream to(nb.proc, buffers);
-        to << send;
     }
-    buffers.finishedSends();
+    swap(send, recv);
 
     // Every processor's share in rank order: the same rounding everywhere
     for (const neighbour& nb : neighbours_)
@@ -318,15 +348,14 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
         }
     };
     bool ownAdded = false;
-    for (const neighbour& nb : neighbours_)
+    forAll(neighbours_, q)
     {
+        const neighbour& nb = neighbours_[q];
         if (!ownAdded && nb.proc > Pstream::myProcNo())
         {
             addOwn();
             ownAdded = true;
         }
-        UIPstream from(nb.proc, buffers);
-        scalarList recv(from);
         label k = 0;
         forEachNode
         (
@@ -335,7 +364,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
             {
                 for (int c = 0; c < nComp; ++c)
                 {
-                    acc_[nComp*n + c] += recv[k++];
+                    acc_[nComp*n + c] += recv[q][k++];
                 }
             }
         );
@@ -399,28 +428,57 @@ void Foam::gridDecomposition::exchange
 ) const
 {
     const auto start = std::chrono::steady_clock::now();
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(send, p)
     {
-        if (send[p].size())
+        if (send[p].size() && neighbourIndex(p) < 0)
         {
-            UOPstream to(p, buffers);
-            to << send[p];
+            FatalErrorInFunction
+                << "processor" << Pstream::myProcNo() << " has "
+                << send[p].size() << " values for processor" << p
+                << ", which is not a neighbour (a particle moved more than"
+                << " a cell in a step?)" << abort(FatalError);
         }
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+
+    // The sizes, then the values, each neighbour to each neighbour
+    List<scalarList> sizes(neighbours_.size(), scalarList(1));
+    List<scalarList> mine(neighbours_.size()), theirs(neighbours_.size());
+    forAll(neighbours_, k)
+    {
+        mine[k] = send[neighbours_[k].proc];
+        sizes[k][0] = mine[k].size();
+    }
+    List<scalarList> theirSizes(neighbours_.size(), scalarList(1));
+    swap(sizes, theirSizes);
+    forAll(neighbours_, k)
+    {
+        theirs[k].setSize(label(theirSizes[k][0]));
+    }
+    swap(mine, theirs);
+
     received.setSize(Pstream::nProcs());
     forAll(received, p)
     {
         received[p].clear();
-        if (recvSizes[p])
-        {
-            UIPstream from(p, buffers);
-            from >> received[p];
-        }
+    }
+    forAll(neighbours_, k)
+    {
+        received[neighbours_[k].proc].transfer(theirs[k]);
     }
     commTime_ += since(start);
+}
+
+
+Foam::label Foam::gridDecomposition::neighbourIndex(const label p) const
+{
+    forAll(neighbours_, k)
+    {
+        if (neighbours_[k].proc == p)
+        {
+            return k;
+        }
+    }
+    return -1;
 }
 
 
