@@ -87,7 +87,7 @@ void Foam::mpmTime::checkStartTime()
         here < 0 ? state(dir) : state(path(), all, here);
     if (s != directoryState::incomplete)
     {
-        startAt(all, s == directoryState::fresh ? -2 : -1);
+        startAt(all, s == directoryState::fresh ? freshStart : ownStart);
         return;
     }
 
@@ -139,7 +139,7 @@ void Foam::mpmTime::startAt(const instantList& all, const label from)
     {
         this->startFrom(all[from]);
     }
-    else if (from == -1)
+    else if (from == ownStart)
     {
         continueStart();
     }
@@ -160,7 +160,7 @@ void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
     // the others: all of them start from the earliest start. Time::setTime
     // reads collectively: either every processor continues its own start
     // directory or every one starts from the common time
-    const bool fresh = from == -2;
+    const bool fresh = from == freshStart;
     if (returnReduce(fresh, orOp<bool>()) != returnReduce(fresh, andOp<bool>()))
     {
         FatalErrorInFunction
@@ -176,7 +176,7 @@ void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
     const bool own = from < 0 && instant(mine).equal(common);
     if (returnReduce(own, andOp<bool>()))
     {
-        if (from == -1)
+        if (from == ownStart)
         {
             continueStart();
         }

@@ -85,7 +85,8 @@ Foam::depthAveragedDiagnostics::totals Foam::depthAveragedDiagnostics::sum
         terrain
     );
 
-    // Over every processor of a decomposed run (its sums in rank order)
+    // Over every processor of a decomposed run (summed in the gather's
+    // fixed order: the same on any run of that decomposition)
     label nTotal = n;
     if (Pstream::parRun())
     {

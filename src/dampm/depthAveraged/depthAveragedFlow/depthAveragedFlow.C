@@ -202,19 +202,29 @@ void Foam::depthAveragedFlow::selectModels
 }
 
 
-void Foam::depthAveragedFlow::initialiseNodes()
+void Foam::depthAveragedFlow::nodalAreas
+(
+    const gridGeometry& g,
+    double* area
+) const
 {
-    const gridGeometry& geom = grid_.geometry();
-    nodes_.resize(geom.nNodes());
-    topography_->sampleNodes(geom, nodes_.Z.data());
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
-            nodalAreas(geom, kernel, nPerCell_, nodes_.area.data());
+            Foam::nodalAreas(g, kernel, nPerCell_, area);
         }
     );
+}
+
+
+void Foam::depthAveragedFlow::initialiseNodes()
+{
+    const gridGeometry& geom = grid_.geometry();
+    nodes_.resize(geom.nNodes());
+    topography_->sampleNodes(geom, nodes_.Z.data());
+    nodalAreas(geom, nodes_.area.data());
     kappaNode_.assign(geom.nNodes(), 1.0);
     if (slopeCorrection_ && !topography_->isFlat())
     {
@@ -283,14 +293,7 @@ void Foam::depthAveragedFlow::seedRelease
     // keeps the columns in its own cells
     const gridGeometry domain = grid_.geometry().domain();
     std::vector<double> area(domain.nNodes());
-    visitShape
-    (
-        *shape_,
-        [&](const auto& kernel)
-        {
-            nodalAreas(domain, kernel, nPerCell_, area.data());
-        }
-    );
+    nodalAreas(domain, area.data());
     depthAveragedSeeding
     (
         domain, nPerCell_, rho_, hMin_, releaseProjection_

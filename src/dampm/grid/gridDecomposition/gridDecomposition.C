@@ -268,10 +268,6 @@ Foam::nodeBox Foam::gridDecomposition::shareNodes
             theirs.hi[d] = label(recv[k][3 + d]) - shift(d);
         }
         nodeBox reached = clip(nb.overlap, stencils);
-        if (reached.empty())
-        {
-            reached = nodeBox();
-        }
         reached.unite(clip(nb.overlap, theirs));
         nb.sum = reached.empty() ? nodeBox() : reached;
         shared.unite(nb.sum);
@@ -388,7 +384,7 @@ void Foam::gridDecomposition::sumNodes(double* values, const int nComp) const
 }
 
 
-Foam::label Foam::gridDecomposition::owner
+Foam::label Foam::gridDecomposition::neighbourHolding
 (
     const double x,
     const double y,
@@ -401,9 +397,9 @@ Foam::label Foam::gridDecomposition::owner
     {
         cell[d] = domainCell(geom_, d, pos[d]);
     }
-    forAll(boxes_, p)
+    forAll(neighbours_, k)
     {
-        const FixedList<label, 6>& b = boxes_[p];
+        const FixedList<label, 6>& b = boxes_[neighbours_[k].proc];
         bool in = true;
         for (int d = 0; d < geom_.dim; ++d)
         {
@@ -411,12 +407,13 @@ Foam::label Foam::gridDecomposition::owner
         }
         if (in)
         {
-            return p;
+            return k;
         }
     }
     FatalErrorInFunction
-        << "the point (" << x << ' ' << y << ' ' << z << ") is in no"
-        << " processor's cells" << abort(FatalError);
+        << "the point (" << x << ' ' << y << ' ' << z << ") left processor"
+        << Pstream::myProcNo() << " for no neighbour's cells (a particle"
+        << " moved more than a cell in a step?)" << abort(FatalError);
     return -1;
 }
 
@@ -428,57 +425,22 @@ void Foam::gridDecomposition::exchange
 ) const
 {
     const auto start = std::chrono::steady_clock::now();
-    forAll(send, p)
-    {
-        if (send[p].size() && neighbourIndex(p) < 0)
-        {
-            FatalErrorInFunction
-                << "processor" << Pstream::myProcNo() << " has "
-                << send[p].size() << " values for processor" << p
-                << ", which is not a neighbour (a particle moved more than"
-                << " a cell in a step?)" << abort(FatalError);
-        }
-    }
 
-    // The sizes, then the values, each neighbour to each neighbour
+    // The sizes first, then the values
     List<scalarList> sizes(neighbours_.size(), scalarList(1));
-    List<scalarList> mine(neighbours_.size()), theirs(neighbours_.size());
-    forAll(neighbours_, k)
-    {
-        mine[k] = send[neighbours_[k].proc];
-        sizes[k][0] = mine[k].size();
-    }
     List<scalarList> theirSizes(neighbours_.size(), scalarList(1));
+    forAll(neighbours_, k)
+    {
+        sizes[k][0] = send[k].size();
+    }
     swap(sizes, theirSizes);
+    received.setSize(neighbours_.size());
     forAll(neighbours_, k)
     {
-        theirs[k].setSize(label(theirSizes[k][0]));
+        received[k].setSize(label(theirSizes[k][0]));
     }
-    swap(mine, theirs);
-
-    received.setSize(Pstream::nProcs());
-    forAll(received, p)
-    {
-        received[p].clear();
-    }
-    forAll(neighbours_, k)
-    {
-        received[neighbours_[k].proc].transfer(theirs[k]);
-    }
+    swap(send, received);
     commTime_ += since(start);
-}
-
-
-Foam::label Foam::gridDecomposition::neighbourIndex(const label p) const
-{
-    forAll(neighbours_, k)
-    {
-        if (neighbours_[k].proc == p)
-        {
-            return k;
-        }
-    }
-    return -1;
 }
 
 

@@ -34,28 +34,29 @@ Foam::label Foam::particleMigration::migrate(particleArrays& particles)
     const double* y = particles.component(particleArrays::Y);
     const double* z = particles.component(particleArrays::Z);
 
-    // The destination of every particle that leaves
+    // The neighbour each leaving particle goes to
+    const label nNb = parts_.nNeighbours();
     dest_.assign(n, -1);
     leaving_.assign(n, 0);
-    labelList count(Pstream::nProcs(), Zero);
+    labelList count(nNb, Zero);
     label nLeaving = 0;
     for (label i = 0; i < n; ++i)
     {
         if (!parts_.holds(x[i], y[i], z[i]))
         {
-            dest_[i] = parts_.owner(x[i], y[i], z[i]);
+            dest_[i] = parts_.neighbourHolding(x[i], y[i], z[i]);
             leaving_[i] = 1;
             ++count[dest_[i]];
             ++nLeaving;
         }
     }
 
-    // Every field, particle by particle, for each processor
-    List<scalarList> send(Pstream::nProcs());
-    forAll(send, p)
+    // Every field, particle by particle, for each neighbour
+    List<scalarList> send(nNb);
+    forAll(send, k)
     {
-        send[p].setSize(count[p]*nComp);
-        count[p] = 0;
+        send[k].setSize(count[k]*nComp);
+        count[k] = 0;
     }
     for (label i = 0; i < n; ++i)
     {
@@ -73,17 +74,18 @@ Foam::label Foam::particleMigration::migrate(particleArrays& particles)
     parts_.exchange(send, received);
     particles.removeFlagged(leaving_);
 
-    forAll(received, p)
+    // Appended in the neighbours' (ascending) rank order
+    forAll(received, k)
     {
-        const scalarList& r = received[p];
+        const scalarList& r = received[k];
         const label nNew = r.size()/nComp;
         const label first = particles.append(nNew);
-        label k = 0;
+        label m = 0;
         for (label i = first; i < first + nNew; ++i)
         {
             for (label c = 0; c < nComp; ++c)
             {
-                particles.component(c)[i] = r[k++];
+                particles.component(c)[i] = r[m++];
             }
         }
     }
