@@ -278,7 +278,7 @@ bool Foam::particleCloudIO::found
 void Foam::particleCloudIO::read
 (
     particleArrays& particles,
-    const fvMesh& mesh,
+    const objectRegistry& db,
     const word& cloudName,
     const word& timeName
 )
@@ -288,7 +288,7 @@ void Foam::particleCloudIO::read
         "positions",
         timeName,
         cloud::prefix/cloudName,
-        mesh,
+        db,
         IOobject::MUST_READ,
         IOobject::NO_WRITE,
         false
@@ -363,7 +363,7 @@ void Foam::particleCloudIO::read
             f.name,
             timeName,
             cloud::prefix/cloudName,
-            mesh,
+            db,
             IOobject::MUST_READ,
             IOobject::NO_WRITE,
             false
@@ -634,7 +634,14 @@ bool Foam::particleCloudIO::readStartTime
             << "time directory " << runTime.timePath() << " was written"
             << " completely but has no cloud " << cloudName << " ("
             << dir/"positions" << " is missing): it cannot be"
-            << " continued" << exit(FatalError);
+            << " continued"
+            << (
+                   isDir(runTime.path()/"processor0")
+                 ? "; the run ran decomposed: reconstructClouds puts its"
+                   " processors' clouds there"
+                 : ""
+               )
+            << exit(FatalError);
     }
     read(particles, mesh, cloudName, timeName);
     // (A processor of a decomposed run may hold none)
