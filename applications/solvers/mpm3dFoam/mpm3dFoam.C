@@ -29,6 +29,9 @@ Description
     it measures overtopping). The log: a line per step, the progress
     (runProgress) every progressInterval seconds of wall time, ExecutionTime
     at write times.
+    Runs decomposed (decomposePar, mpirun -np N mpm3dFoam -parallel; rigid
+    barriers): every processor one box of the grid and its particles, the
+    files written once by the master (doc/parallel.md).
     Started from a conversion (depthToParticles3D), it keeps accumulating
     the run-out's hazard maps on its grid (runOutMaps):
     postProcessing/hazardMaps/<time>/ cover the whole event.
@@ -64,14 +67,6 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCaseLists.H"
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "mpm3dFoam runs on one processor: -parallel is refused (the"
-            << " 3D grid is not split across processors). Run it without"
-            << " -parallel on the undecomposed case (reconstructPar first)"
-            << exit(FatalError);
-    }
     const word solverName("mpm3dFoam");
     #include "createMPMTime.H"
     #include "createMesh.H"
@@ -104,7 +99,10 @@ int main(int argc, char *argv[])
         {
             flow.gridToParticles(dt);
         });
-        timers.countStep(flow.particles().size());
+        timers.countStep
+        (
+            returnReduce(flow.particles().size(), sumOp<label>())
+        );
 
         if (eventMaps)
         {
@@ -128,6 +126,14 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::IO, [&]{ eventMaps->writeRasters(runTime); });
     }
     #include "reportBarriers.H"
+    if (Pstream::parRun())
+    {
+        Info<< "Particles moved between processors: "
+            << flow.migration().nMoved() << nl
+            << "Communication (node sums, moves; in P2G and G2P): "
+            << returnReduce(grid.decomposition().commTime(), maxOp<scalar>())
+            << " s on the slowest processor" << nl << endl;
+    }
     timers.report(Info);
     runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;

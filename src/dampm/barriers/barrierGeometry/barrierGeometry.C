@@ -136,9 +136,9 @@ void Foam::barrierGeometry::nodeDistances
     gridGeometry::index first[3], last[3];
     for (int d = 0; d < 3; ++d)
     {
-        const scalar l = max((lo[d] - g.origin[d])*g.invDx[d], -2.0);
-        const scalar u =
-            min((hi[d] - g.origin[d])*g.invDx[d], g.nCells[d] + 2.0);
+        // (in this part's lattice: a decomposed grid's part is shifted)
+        const scalar l = max(g.local(d, lo[d]), -2.0);
+        const scalar u = min(g.local(d, hi[d]), g.nCells[d] + 2.0);
         first[d] = gridGeometry::index(std::ceil(l)) + gridGeometry::nGhost;
         last[d] = gridGeometry::index(std::floor(u)) + gridGeometry::nGhost + 1;
         first[d] = max(first[d], 0);

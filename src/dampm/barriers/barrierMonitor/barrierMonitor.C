@@ -9,6 +9,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "barrierMonitor.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include "barrierGeometry.H"
 #include "nodeContact.H"
 #include "knownKeywords.H"
@@ -173,7 +175,7 @@ Foam::scalar Foam::barrierMonitor::overtoppingMass
     {
         s[0] += passed(x[i], y[i], z[i]) ? m[i] : 0;
     });
-    return passedMass[0] + passedOutflow_;
+    return returnReduce(passedMass[0] + passedOutflow_, sumOp<scalar>());
 }
 
 
@@ -205,8 +207,8 @@ void Foam::barrierMonitor::execute
             top = z[c];
         }
     }
-    runUp_ = top;
-    maxRunUp_ = max(maxRunUp_, top);
+    runUp_ = returnReduce(top, maxOp<scalar>());
+    maxRunUp_ = max(maxRunUp_, runUp_);
 }
 
 

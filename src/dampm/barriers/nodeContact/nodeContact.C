@@ -9,6 +9,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "nodeContact.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include "knownKeywords.H"
 #include "orderedSums.H"
 #include <algorithm>
@@ -86,12 +88,15 @@ void Foam::nodeContact::finishSearch
 {
     normalForce_.assign(nodes_.size(), 0.0);
     share_.assign(nodes_.size(), 1.0);
+    // A decomposed grid's part counts the force of the nodes it owns only:
+    // the processors' sums add up to the whole barrier's
     forAll(nodes_, c)
     {
-        share_[c] = domainShare(g, wall, nodes_[c]);
+        share_[c] =
+            g.ownsNode(nodes_[c]) ? domainShare(g, wall, nodes_[c]) : 0;
     }
 
-    if (nodes_.empty())
+    if (returnReduce(nodes_.size(), sumOp<label>()) == 0)
     {
         WarningInFunction
             << "barrier " << name_ << " has no grid node inside it or on its"

@@ -11,6 +11,8 @@ License
 #include "terrainGeometry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "IOmanip.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -130,17 +132,20 @@ void Foam::barrierGeometries::terrainGeometry::checkGrid
 
     label lowest, highest;
     topographyModel::meshRange(g, Znodes.data(), lowest, highest);
+    // Over the whole domain (every processor's part)
+    const scalar zMin = returnReduce(Znodes[lowest], minOp<scalar>());
+    const scalar zMax = returnReduce(Znodes[highest], maxOp<scalar>());
     const scalar zLo = g.origin[2];
-    const scalar zHi = g.upper(2);
-    const bool below = Znodes[highest] < zLo;
-    if (below || Znodes[lowest] > zHi)
+    const scalar zHi = g.domainUpper(2);
+    const bool below = zMax < zLo;
+    if (below || zMin > zHi)
     {
         FatalIOErrorInFunction(dict_)
             << setprecision(12)
             << "the terrain of barrier " << name_ << " (topography "
             << topography_->description().c_str() << ") lies wholly "
             << (below ? "below" : "above") << " the mesh: Z from "
-            << Znodes[lowest] << " to " << Znodes[highest] << " m over the"
+            << zMin << " to " << zMax << " m over the"
             << " mesh's nodes, the mesh's z-range " << zLo << " to " << zHi
             << " m (the vertices of system/blockMeshDict). "
             << (

@@ -18,6 +18,7 @@ License
 #include "Time.H"
 #include "fpTrapsHeld.H"
 #include "HashSet.H"
+#include "HashOps.H"
 #include "OStringStream.H"
 #include <cmath>
 #include <numeric>
@@ -138,7 +139,11 @@ Foam::materialParticles Foam::mpm3dFlow::materialView()
 
 void Foam::mpm3dFlow::seed(const dictionary& regions)
 {
-    const gridGeometry& g = grid_.geometry();
+    // The domain's lattice of particle positions; a decomposed grid's part
+    // keeps those in its own cells
+    const gridGeometry& part = grid_.geometry();
+    const gridGeometry g = part.domain();
+    const gridDecomposition& parts = grid_.decomposition();
     const label n = nPerCell_;
     const label nAcross = perCell(1);
     const scalar subVolume = g.dx[0]*g.dx[1]*g.dx[2]/(n*nAcross*n);
@@ -192,9 +197,9 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             dict.getOrDefault<scalar>("freeSurface", box.max().z());
         particleMemory::reserve
         (
-            particles_, particleMemory::seedsInBox(g, n, box),
+            particles_, particleMemory::seedsInBox(part, n, box),
             "the initial region " + e.keyword() + " (constant/mpm3dProperties)",
-            g, n
+            part, n
         );
         const overlapType overlap = overlapTypeNames.getOrDefault
         (
@@ -217,7 +222,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                     (
                         g.origin[0] + (i + 0.5)*g.dx[0]/n, y, z
                     );
-                    if (!box.contains(x))
+                    if (!box.contains(x) || !parts.holds(x.x(), x.y(), x.z()))
                     {
                         continue;
                     }
@@ -238,7 +243,11 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 }
             }
         }
-        // The earlier regions it overlaps, for the messages
+        // Over every processor: the counts, the earlier regions it overlaps
+        reduce(nShared, sumOp<label>());
+        const label nPts = returnReduce(label(pts.size()), sumOp<label>());
+        Pstream::combineGather(shared, HashSetOps::plusEqOp<word>());
+        Pstream::combineScatter(shared);
         string sharedWith;
         for (const word& r : shared.sortedToc())
         {
@@ -257,7 +266,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
                 << " twice the mass there) or skip (the overlap stays the"
                 << " earlier region's)" << exit(FatalIOError);
         }
-        if (pts.empty())
+        if (nPts == 0)
         {
             FatalIOErrorInFunction(dict)
                 << "initial region " << e.keyword() << " (" << box.min()
@@ -280,7 +289,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             OStringStream shape;
             barriers_[holding].geometry().describe(shape);
             FatalIOErrorInFunction(dict)
-                << nInside << " of the " << pts.size() << " particles of"
+                << nInside << " of the " << nPts << " particles of"
                 << " initial region " << e.keyword() << " (" << box.min()
                 << " to " << box.max() << ") would start inside barrier "
                 << barriers_[holding].name() << " (" << shape.str().c_str()
@@ -297,6 +306,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             {
                 zMin = min(zMin, x.z());
             }
+            reduce(zMin, minOp<scalar>());
             scalar pMax = 0, JMin = 0;
             {
                 const fpTrapsHeld hold;
@@ -339,13 +349,14 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
             particles_.component(sigma_ + 5)[i] = -p;
             mass += rho0*subVolume/J;
         }
+        reduce(mass, sumOp<scalar>());
 
         // What was kept, and what of the box lies outside the mesh
         boundBox kept(box);
         const scalar inside = kept.intersect(mesh) ? kept.volume() : 0;
         const scalar outside =
             mesh.contains(box) ? 0 : box.volume() - inside;
-        Info<< "Initial region " << e.keyword() << ": " << pts.size()
+        Info<< "Initial region " << e.keyword() << ": " << nPts
             << " particles" << (hydrostatic ? ", hydrostatic" : "")
             << ", kept " << mass << " kg";
         if (outside > 0)
@@ -367,7 +378,7 @@ void Foam::mpm3dFlow::seed(const dictionary& regions)
         earlier.append(box);
         earlierNames.append(e.keyword());
     }
-    if (particles_.size() == 0)
+    if (returnReduce(particles_.size(), sumOp<label>()) == 0)
     {
         FatalIOErrorInFunction(regions)
             << "initialRegions holds no region: nothing to simulate"
@@ -391,6 +402,8 @@ Foam::label Foam::mpm3dFlow::barrierHolding
         {
             nInside += i;
         }
+        // (the points of every processor)
+        reduce(nInside, sumOp<label>());
         if (nInside)
         {
             return b;
@@ -418,12 +431,13 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
     {
         for (int d = 0; d < 3; ++d)
         {
-            // A hair inside: the particle's cell is the last one
+            // A hair inside: the particle's cell is the last one (a part's
+            // sides inside the domain: the particle moves to its neighbour)
             const double eps = 1e-9*g.dx[d];
-            const double lo = g.origin[d], hi = g.upper(d);
+            const double lo = g.origin[d], hi = g.domainUpper(d);
             if (x[d][i] < lo || x[d][i] > hi)
             {
-                const bool wall = settings_.wall[d][x[d][i] > hi];
+                const bool wall = domainWall_[d][x[d][i] > hi];
                 if (wall)
                 {
                     x[d][i] = x[d][i] < lo ? lo + eps : hi - eps;
@@ -485,6 +499,7 @@ Foam::mpm3dFlow::mpm3dFlow
     J_(-1),
     div_(-1),
     schedule_(grid.geometry()),
+    migration_(grid.decomposition()),
     outflowMass_(0),
     speedLimit_(dict)
 {
@@ -547,10 +562,20 @@ Foam::mpm3dFlow::mpm3dFlow
             << "damping = " << settings_.damping << " is invalid; allowed:"
             << " >= 0 [1/s]" << exit(FatalIOError);
     }
-    grid_.wallSides(settings_.wall);
+    // The domain's walls; those of this processor's part: the domain's
+    // sides it touches
+    grid_.wallSides(domainWall_);
+    const gridGeometry& geom = grid.geometry();
+    for (int d = 0; d < 3; ++d)
+    {
+        settings_.wall[d][0] = domainWall_[d][0] && geom.offset[d] == 0;
+        settings_.wall[d][1] =
+            domainWall_[d][1]
+         && geom.offset[d] + geom.nCells[d] == geom.nCellsDomain[d];
+    }
 
-    // Barriers
-    const fileName caseDir = grid.mesh().time().path();
+    // Barriers (their files in the case, not a processor directory)
+    const fileName caseDir = grid.mesh().time().globalPath();
     const dictionary& barrierDicts = dict.subOrEmptyDict("barriers");
     for (const entry& e : barrierDicts)
     {
@@ -563,6 +588,15 @@ Foam::mpm3dFlow::mpm3dFlow
         }
         if (membraneBarrier::isMembrane(e.dict()))
         {
+            if (Pstream::parRun())
+            {
+                FatalIOErrorInFunction(e.dict())
+                    << "barrier " << e.keyword() << " is a flexible barrier"
+                    << " (a membrane), which mpm3dFoam does not split across"
+                    << " processors; allowed with -parallel: rigid barriers"
+                    << " (plane, box, triSurface, terrain); run it without"
+                    << " -parallel" << exit(FatalIOError);
+            }
             membranes_.append
             (
                 new membraneBarrier(e.keyword(), e.dict(), caseDir, g)
@@ -627,7 +661,7 @@ Foam::mpm3dFlow::mpm3dFlow
     {
         mMax = max(mMax, m[i]);
     }
-    settings_.massTol = 1e-12*mMax;
+    settings_.massTol = 1e-12*returnReduce(mMax, maxOp<scalar>());
     flagged_.reserve(particles_.size());
     speedLimit_.setDefault(speedScale());
 }
@@ -642,7 +676,7 @@ Foam::scalar Foam::mpm3dFlow::speedScale() const
         mag(vector(settings_.g[0], settings_.g[1], settings_.g[2]));
     return
         material_->waveSpeed() + diagnostics().maxSpeed
-      + std::sqrt(2*gMag*(g.upper(2) - g.origin[2]));
+      + std::sqrt(2*gMag*(g.domainUpper(2) - g.origin[2]));
 }
 
 
@@ -659,7 +693,7 @@ Foam::vector Foam::mpm3dFlow::particleSpacing() const
 Foam::scalar Foam::mpm3dFlow::width() const
 {
     const gridGeometry& g = grid_.geometry();
-    return g.upper(1) - g.origin[1];
+    return g.domainUpper(1) - g.origin[1];
 }
 
 
@@ -709,7 +743,8 @@ void Foam::mpm3dFlow::readState(const dictionary& state)
 
 void Foam::mpm3dFlow::describe(Ostream& os) const
 {
-    const gridGeometry& g = grid_.geometry();
+    const gridGeometry g = grid_.geometry().domain();
+    const label nParticles = returnReduce(particles_.size(), sumOp<label>());
     os  << "mpm3dFoam: explicit 3D MPM, update stress last" << nl
         << "    grid: " << g.nCells[0] << " x " << g.nCells[1] << " x "
         << g.nCells[2] << " cells of " << g.dx[0] << " x " << g.dx[1]
@@ -720,7 +755,7 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
             << " over its " << width() << " m across y";
     }
     os  << nl
-        << "    particles: " << particles_.size() << " ("
+        << "    particles: " << nParticles << " ("
         << nPerCell_ << " per cell and axis when seeded)" << nl
         << "    shape function: " << shape_->type() << nl
         << "    transfer: "
@@ -751,7 +786,7 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
         for (int s = 0; s < 2; ++s)
         {
             os  << ' ' << axes[d] << (s ? " max " : " min ")
-                << (settings_.wall[d][s] ? "wall" : "open") << ';';
+                << (domainWall_[d][s] ? "wall" : "open") << ';';
         }
     }
     os  << nl << "    barriers: ";
@@ -775,14 +810,23 @@ void Foam::mpm3dFlow::describe(Ostream& os) const
 }
 
 
-void Foam::mpm3dFlow::particlesToGrid()
+void Foam::mpm3dFlow::findNodes()
 {
     const gridGeometry& g = grid_.geometry();
-    particles_.sortByCell(g, schedule_.maxStale());
+    const gridDecomposition& parts = grid_.decomposition();
 
     // Work on the nodes the particles touch, and clear those of last step
-    activeNodes_ = stencilNodes_;
+    activeNodes_ = sumNodes_;
     stencilNodes_ = particles_.stencilNodes(g);
+    if (parts.active())
+    {
+        // Whole rows of boxes: the shared nodes a neighbour's particles
+        // reach join the sums
+        sumNodes_ = stencilNodes_;
+        sumNodes_.unite(parts.shareNodes(stencilNodes_));
+        activeNodes_.unite(sumNodes_);
+        return;
+    }
     activeNodes_.unite(stencilNodes_);
     std::swap(lastRows_, stencilRows_);
     particles_.stencilRows(g, schedule_.maxStale(), stencilRows_);
@@ -790,6 +834,16 @@ void Foam::mpm3dFlow::particlesToGrid()
     activeRows_.unite(lastRows_, stencilRows_);
     stencilNodes_.rows = &stencilRows_;
     activeNodes_.rows = &activeRows_;
+    sumNodes_ = stencilNodes_;
+}
+
+
+void Foam::mpm3dFlow::particlesToGrid()
+{
+    const gridGeometry& g = grid_.geometry();
+    const gridDecomposition& parts = grid_.decomposition();
+    particles_.sortByCell(g, schedule_.maxStale());
+    findNodes();
     zeroNodes3D(g, activeNodes_, nodes_);
 
     const mpm3dParticles view = kernelView();
@@ -804,24 +858,28 @@ void Foam::mpm3dFlow::particlesToGrid()
                     g, schedule_, kernel, stencilNodes_,
                     particles_.cellStart().data(), view, nodes_
                 );
+                parts.sumNodes(nodes_.vol.data(), 1);
+                parts.sumNodes(nodes_.pV.data(), 1);
                 foldWalls
                 (
-                    g, stencilNodes_, settings_.wall,
+                    g, sumNodes_, settings_.wall,
                     {nodes_.vol.data(), nodes_.pV.data()}, {}
                 );
                 // pV: the node pressure from here on
                 nodeMeans3D
                 (
-                    g, stencilNodes_, nodes_.vol.data(), nodes_.pV.data()
+                    g, sumNodes_, nodes_.vol.data(), nodes_.pV.data()
                 );
             }
-            particlesToGrid3D
+            scatterNodeSums3D
             (
                 g, schedule_, kernel, stencilNodes_,
                 particles_.cellStart().data(), view, settings_, nodes_
             );
         }
     );
+    parts.sumNodes(nodes_.sums.data(), mpm3dGrid::sumsWidth);
+    unpackNodeSums3D(g, sumNodes_, nodes_);
 }
 
 
@@ -845,6 +903,7 @@ Foam::scalar Foam::mpm3dFlow::stableDeltaT
         const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
         maxU2 = u2 > maxU2 ? u2 : maxU2;
     }
+    reduce(maxU2, maxOp<double>());
     const scalar h = g.hMin();
     scalar dt = maxCo*h/(material_->waveSpeed() + std::sqrt(maxU2));
     limit = "wave";
@@ -884,7 +943,7 @@ void Foam::mpm3dFlow::pushFromMembranes
     const membraneContact::penalty stiffness
     {
         material_->rho(), material_->waveSpeed(), g.hMin(), maxCo,
-        g.plane ? g.upper(1) - g.origin[1] : 0
+        g.plane ? width() : 0
     };
     double* const f[3] = {nodes_.fx.data(), nodes_.fy.data(), nodes_.fz.data()};
     for (membraneBarrier& m : membranes_)
@@ -975,14 +1034,15 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
             );
             if (settings_.smoothJ)
             {
+                grid_.decomposition().sumNodes(nodes_.dVol.data(), 1);
                 foldWalls
                 (
-                    g, stencilNodes_, settings_.wall, {nodes_.dVol.data()}, {}
+                    g, sumNodes_, settings_.wall, {nodes_.dVol.data()}, {}
                 );
                 // dVol: the node volume ratio from here on
                 nodeMeans3D
                 (
-                    g, stencilNodes_, nodes_.vol.data(), nodes_.dVol.data()
+                    g, sumNodes_, nodes_.vol.data(), nodes_.dVol.data()
                 );
                 volumeChangeToParticles3D
                 (
@@ -1001,6 +1061,7 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
     }
     material_->updateStress(particles_, materialView(), dt);
     outflowMass_ += removeOutflow();
+    migration_.migrate(particles_);
 }
 
 
@@ -1045,13 +1106,32 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
         }
     });
 
+    // Over every processor of a decomposed run (summed in the gather's
+    // fixed order: the same on any run of that decomposition)
+    label nTotal = n;
+    if (Pstream::parRun())
+    {
+        List<scalar> sums(7), maxima(7);
+        std::copy_n(S, 6, sums.begin());
+        sums[6] = n;
+        std::copy_n(mx, 7, maxima.begin());
+        Pstream::listCombineGather(sums, plusEqOp<scalar>());
+        Pstream::listCombineScatter(sums);
+        Pstream::listCombineGather(maxima, maxEqOp<scalar>());
+        Pstream::listCombineScatter(maxima);
+        std::copy_n(sums.begin(), 6, S);
+        nTotal = label(sums[6]);
+        std::copy_n(maxima.begin(), 7, mx);
+    }
+
     totals t;
+    t.nParticles = nTotal;
     t.mass = S[0];
     t.kineticEnergy = S[1];
     t.potentialEnergy = S[2];
     t.maxSpeed = std::sqrt(max(mx[0], 0.0));
     t.momentum = vector(S[3], S[4], S[5]);
-    t.extent = n
+    t.extent = nTotal
         ? boundBox(point(-mx[1], -mx[2], -mx[3]), point(mx[4], mx[5], mx[6]))
         : boundBox(point::zero, point::zero);
     return t;
@@ -1065,8 +1145,10 @@ void Foam::mpm3dFlow::smoothPressure()
         return;
     }
     const gridGeometry& g = grid_.geometry();
+    const gridDecomposition& parts = grid_.decomposition();
     const mpm3dParticles view = kernelView();
-    const nodeBox box = particles_.stencilNodes(g);
+    nodeBox box = particles_.stencilNodes(g);
+    box.unite(parts.shareNodes(box));
     visitKernel
     (
         [&](const auto& kernel)
@@ -1074,7 +1156,12 @@ void Foam::mpm3dFlow::smoothPressure()
             nodalPressure3D
             (
                 g, kernel, box, settings_.wall, view,
-                particles_.component(p_), nodes_
+                particles_.component(p_), nodes_,
+                [&](double* vol, double* pV)
+                {
+                    parts.sumNodes(vol, 1);
+                    parts.sumNodes(pV, 1);
+                }
             );
         }
     );
@@ -1085,7 +1172,7 @@ bool Foam::mpm3dFlow::finite() const
 {
     std::vector<label> all(particles_.nComponentArrays());
     std::iota(all.begin(), all.end(), 0);
-    return particles_.finite(all);
+    return returnReduce(particles_.finite(all), andOp<bool>());
 }
 
 

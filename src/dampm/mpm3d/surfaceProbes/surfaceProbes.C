@@ -9,6 +9,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "surfaceProbes.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
 #include "knownKeywords.H"
 #include "vector2D.H"
 #include <cmath>
@@ -40,18 +42,18 @@ Foam::surfaceProbes::surfaceProbes
         // Finite first: an ordered comparison with NaN raises a trap
         const bool inside =
             std::isfinite(loc.x()) && std::isfinite(loc.y())
-         && loc.x() >= geom.origin[0] && loc.x() <= geom.upper(0)
+         && loc.x() >= geom.origin[0] && loc.x() <= geom.domainUpper(0)
          && (
                 geom.plane
-             || (loc.y() >= geom.origin[1] && loc.y() <= geom.upper(1))
+             || (loc.y() >= geom.origin[1] && loc.y() <= geom.domainUpper(1))
             );
         if (!inside)
         {
             FatalIOErrorInFunction(e.dict())
                 << "location " << loc << " of surface probe " << e.keyword()
                 << " is outside the mesh; allowed: x in [" << geom.origin[0]
-                << ", " << geom.upper(0) << "], y in [" << geom.origin[1]
-                << ", " << geom.upper(1) << "]" << exit(FatalIOError);
+                << ", " << geom.domainUpper(0) << "], y in [" << geom.origin[1]
+                << ", " << geom.domainUpper(1) << "]" << exit(FatalIOError);
         }
         locations_.append(loc);
         files_.append
@@ -102,6 +104,9 @@ void Foam::surfaceProbes::write
                 top = z[i] > top ? z[i] : top;
             }
         }
+        // (over every processor)
+        reduce(top, maxOp<double>());
+        reduce(near, sumOp<label>());
         files_[p].write(List<scalar>({t, top, scalar(near)}));
     }
 }
