@@ -1,8 +1,9 @@
 """The decomposition dampm runs with: each processor one box of the
-structured grid. For N processors the grid is cut into n = (nx ny 1) boxes,
-nx ny = N, as square as possible, of near-equal cell counts along each axis
-(whether or not N divides them); decomposePar takes the cut as method
-manual (constant/cellDecomposition)."""
+structured grid. For N processors the grid is cut into n = (nx ny nz)
+boxes, nx ny nz = N (nz = 1 on a 2D grid, one cell thick), as square (or
+cubic) as possible, of near-equal cell counts along each axis (whether or
+not N divides them); decomposePar takes the cut as method manual
+(constant/cellDecomposition)."""
 import os
 import sys
 
@@ -19,24 +20,29 @@ def cell_counts(case):
 
 
 def split(counts, nProcs):
-    """(nx, ny, 1) with nx ny = nProcs and at least one cell per box along
-    each axis, the boxes as square as possible (x cut first on a tie)."""
+    """(nx, ny, nz) with nx ny nz = nProcs and at least one cell per box
+    along each axis, the boxes as square as possible along x, y (and z on a
+    3D grid); x cut first, then y, on a tie."""
+    axes = 3 if counts[2] > 1 else 2
     best = None
     for nx in range(nProcs, 0, -1):
-        ny = nProcs // nx
-        if nx * ny != nProcs or nx > counts[0] or ny > counts[1]:
-            continue
-        a, b = counts[0] / nx, counts[1] / ny
-        aspect = max(a, b) / min(a, b)
-        if best is None or aspect < best[0]:
-            best = (aspect, nx, ny)
-    return None if best is None else (best[1], best[2], 1)
+        for ny in range(nProcs // nx, 0, -1):
+            nz = nProcs // (nx * ny)
+            n = (nx, ny, nz)
+            if nx * ny * nz != nProcs or any(n[d] > counts[d] for d in range(3)):
+                continue
+            sizes = [counts[d] / n[d] for d in range(axes)]
+            aspect = max(sizes) / min(sizes)
+            if best is None or aspect < best[0]:
+                best = (aspect, n)
+    return None if best is None else best[1]
 
 
 def owners(counts, n):
-    """The processor of every cell (blockMesh order: x fastest)."""
-    cut = [np.arange(counts[d]) * n[d] // counts[d] for d in range(2)]
-    return (cut[0][None, :] + n[0] * cut[1][:, None]).ravel()
+    """The processor of every cell (blockMesh order: x fastest, then y,
+    then z)."""
+    cut = [np.arange(counts[d]) * n[d] // counts[d] for d in range(3)]
+    return (cut[0][None, None, :] + n[0] * (cut[1][None, :, None] + n[1] * cut[2][:, None, None])).ravel()
 
 
 HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
@@ -71,8 +77,8 @@ def write_dict(case, nProcs):
     counts = cell_counts(case)
     n = split(counts, nProcs)
     if n is None:
-        sys.exit("decomposition: %d processors cannot each hold a box of the %d x %d cells of %s"
-                 % (nProcs, counts[0], counts[1], case))
+        sys.exit("decomposition: %d processors cannot each hold a box of the %s cells of %s"
+                 % (nProcs, " x ".join(map(str, counts)), case))
     cells = owners(counts, n)
     with open(os.path.join(case, "constant", "cellDecomposition"), "w") as f:
         f.write(HEADER % ("labelList", "cellDecomposition"))
@@ -80,9 +86,9 @@ def write_dict(case, nProcs):
     with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
         f.write(HEADER % ("dictionary", "decomposeParDict"))
         f.write(DICT % {"nProcs": nProcs, "n": " ".join(map(str, n)),
-                        "cells": " x ".join(map(str, counts[:2]))})
-    print("system/decomposeParDict: %d processors, boxes n (%s) of the %d x %d cells"
-          % (nProcs, " ".join(map(str, n)), counts[0], counts[1]))
+                        "cells": " x ".join(map(str, counts if counts[2] > 1 else counts[:2]))})
+    print("system/decomposeParDict: %d processors, boxes n (%s) of the %s cells"
+          % (nProcs, " ".join(map(str, n)), " x ".join(map(str, counts if counts[2] > 1 else counts[:2]))))
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ Description
     reconstructPar (which reconstructs the mesh fields but cannot read
     dampm's clouds): every processor's cloud in rank order, written as a
     serial run writes it, and uniform/ with the processors' outflows summed
-    (cloudReconstruction). A serial run, depthToParticles3D, ParaView and
+    (processorClouds). decomposeClouds does the reverse. A serial run, depthToParticles3D, ParaView and
     dampmPost then read the case as if it had run serially.
 
     Times: as reconstructPar (-time, -latestTime, -noZero; all by default);
@@ -35,7 +35,7 @@ Usage
 #include "fvCFD.H"
 #include "timeSelector.H"
 #include "mpmGrid.H"
-#include "cloudReconstruction.H"
+#include "processorClouds.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -63,14 +63,14 @@ int main(int argc, char *argv[])
 
     #include "createMesh.H"
     const mpmGrid grid(mesh);
-    const cloudReconstruction clouds(grid, nProcs);
+    const processorClouds clouds(grid, nProcs);
 
-    const instantList times = timeSelector::select(clouds.times(), args);
+    const instantList times = timeSelector::select(clouds.procTimes(), args);
     if (times.empty())
     {
         FatalErrorInFunction
             << "no time of processor0 selected; its times: "
-            << clouds.times() << exit(FatalError);
+            << clouds.procTimes() << exit(FatalError);
     }
     Info<< "Reconstructing the clouds of " << nProcs << " processors\n"
         << endl;

@@ -32,7 +32,8 @@ Foam::runOutMaps::runOutMaps
     case_(sourceCase)
 {
     case_.setTime(instant(readScalar(sourceTime_), sourceTime_), 0);
-    grid_.reset(new mpmGrid(case_.mesh()));
+    // (whole on every processor of a decomposed 3D run)
+    grid_.reset(new mpmGrid(case_.mesh(), true));
     topography_ = topographyModel::New(case_.properties(), case_.path());
 
     const gridGeometry& g = grid_->geometry();
@@ -49,6 +50,44 @@ Foam::runOutMaps::runOutMaps
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::runOutMaps::sumProcessors(int32_t lo[2], int32_t hi[2])
+{
+    // The box of cells every processor's particles touched, and the node
+    // sums over it completed (in the gather's fixed order)
+    for (int d = 0; d < 2; ++d)
+    {
+        lo[d] = returnReduce(lo[d], minOp<int32_t>());
+        hi[d] = returnReduce(hi[d], maxOp<int32_t>());
+    }
+    if (hi[0] <= lo[0])
+    {
+        return;
+    }
+    const gridGeometry& g = grid_->geometry();
+    std::vector<double>* const sums[4] = {&mass_, &px_, &py_, &volume_};
+    List<scalar> box(4*(hi[0] - lo[0])*(hi[1] - lo[1]));
+    const auto forEachNode = [&](const auto& fn)
+    {
+        label k = 0;
+        for (int32_t j = lo[1]; j < hi[1]; ++j)
+        {
+            for (int32_t i = lo[0]; i < hi[0]; ++i)
+            {
+                const label node = g.nodeIndex(i, j, 0);
+                for (std::vector<double>* s : sums)
+                {
+                    fn((*s)[node], box[k++]);
+                }
+            }
+        }
+    };
+    forEachNode([](const double v, scalar& b) { b = v; });
+    Pstream::listCombineGather(box, plusEqOp<scalar>());
+    Pstream::listCombineScatter(box);
+    forEachNode([](double& v, const scalar b) { v = b; });
+}
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * //
 
@@ -204,6 +243,10 @@ void Foam::runOutMaps::update(const particleArrays& particles)
         }
     }
 
+    if (Pstream::parRun())
+    {
+        sumProcessors(lo, hi);
+    }
     active_ = nodeBox();
     if (hi[0] <= lo[0])
     {

@@ -452,6 +452,20 @@ void Foam::gridDecomposition::gatherLattice
 {
     const label nx = geom_.nCellsDomain[0] + 1;
     const label ny = geom_.nCellsDomain[1] + 1;
+    if (!active())
+    {
+        // One part: the lattice is this grid's (on every processor that
+        // holds it whole)
+        lattice.setSize(nx*ny);
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label i = 0; i < nx; ++i)
+            {
+                lattice[i + nx*j] = values[geom_.nodeIndex(i, j, 0)];
+            }
+        }
+        return;
+    }
 
     // Each processor's own lattice nodes (its cells' corners), rows in order
     List<scalarList> parts(Pstream::nProcs());

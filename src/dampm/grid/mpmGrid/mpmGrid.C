@@ -85,14 +85,14 @@ void Foam::mpmGrid::detectEmpty(const label n[3])
 void Foam::mpmGrid::setGeometry()
 {
     const pointField& pts = mesh_.points();
-    if (returnReduce(mesh_.nCells(), minOp<label>()) == 0)
+    if (mesh_.nCells() == 0)
     {
         notStructured("it has no cells");
     }
     // The whole domain's box: on a decomposed case the same numbers as the
     // undecomposed mesh's, so the lattice is that of a serial run
     const boundBox localBb(pts, false);
-    const boundBox bb(pts, true);
+    const boundBox bb(pts, decomposed());
 
     // The spacing from the first cell's bounding box; the lattice checks
     // below catch any other cell size
@@ -128,7 +128,7 @@ void Foam::mpmGrid::setGeometry()
 
     if (label(nOwn[0])*nOwn[1]*nOwn[2] != mesh_.nCells())
     {
-        if (Pstream::parRun())
+        if (decomposed())
         {
             FatalErrorInFunction
                 << "processor " << Pstream::myProcNo() << " of the decomposed"
@@ -166,7 +166,7 @@ void Foam::mpmGrid::setPart(const label nOwn[3])
     {
         ownHi_[d] = ownLo_[d] + nOwn[d];
     }
-    if (!Pstream::parRun())
+    if (!decomposed())
     {
         return;
     }
@@ -283,9 +283,10 @@ void Foam::mpmGrid::mapCells()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
+Foam::mpmGrid::mpmGrid(const fvMesh& mesh, const bool whole)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    whole_(whole)
 {
     setGeometry();
     mapPoints();
@@ -311,7 +312,7 @@ Foam::mpmGrid::mpmGrid(const fvMesh& mesh)
     }
     Info<< ", origin (" << geom_.origin[0] << ' ' << geom_.origin[1] << ' '
         << geom_.origin[2] << ")";
-    if (Pstream::parRun())
+    if (decomposed())
     {
         Info<< ", decomposed into " << Pstream::nProcs() << " boxes";
     }

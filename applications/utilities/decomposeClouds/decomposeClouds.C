@@ -1,0 +1,96 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Application
+    decomposeClouds
+
+Group
+    grpMPMUtilities
+
+Description
+    Splits the particle clouds and the run state of a case's time
+    directories onto its processor directories, after decomposePar (which
+    decomposes the mesh and the fields but cannot write dampm's clouds):
+    each particle goes to the processor holding its cell, and uniform/ to
+    every processor, the outflows to processor0 alone (processorClouds).
+    A decomposed run (mpirun ... -parallel) then continues the time: a
+    serial run's restart, or the start depthToParticles3D wrote.
+    reconstructClouds does the reverse.
+
+    Times: -time, -latestTime, -withZero (all but 0 by default); a time
+    directory without a run's record (a fresh start) has nothing to
+    split: skipped, said so.
+
+Usage
+    \verbatim
+        decomposePar -force
+        decomposeClouds [-latestTime | -time ...]
+    \endverbatim
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "timeSelector.H"
+#include "mpmGrid.H"
+#include "mpmTime.H"
+#include "processorClouds.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Decompose dampm's particle clouds and run state onto the processor"
+        " directories (after decomposePar)"
+    );
+    timeSelector::addOptions(true, true);
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const label nProcs = fileHandler().nProcs(args.path());
+    if (!nProcs)
+    {
+        FatalErrorInFunction
+            << "case " << args.path() << " has no processor directories:"
+            << " run decomposePar first" << exit(FatalError);
+    }
+
+    const instantList times = timeSelector::select0(runTime, args);
+
+    #include "createMesh.H"
+    const mpmGrid grid(mesh);
+    const processorClouds clouds(grid, nProcs);
+
+    Info<< "Decomposing the clouds onto " << nProcs << " processors\n"
+        << endl;
+    for (const instant& t : times)
+    {
+        runTime.setTime(t, 0);
+        Info<< "Time = " << runTime.timeName() << endl;
+        if
+        (
+            mpmTime::state(runTime.timePath())
+         == mpmTime::directoryState::fresh
+        )
+        {
+            Info<< "    a fresh start (no run's record): nothing to split"
+                << endl;
+            continue;
+        }
+        clouds.decompose();
+    }
+
+    Info<< "\nEnd\n" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
