@@ -55,19 +55,10 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const label nProcs = fileHandler().nProcs(args.path());
-    if (!nProcs)
-    {
-        FatalErrorInFunction
-            << "case " << args.path() << " has no processor directories:"
-            << " run decomposePar first" << exit(FatalError);
-    }
+    const string noProcessors("run decomposePar first");
+    #include "createProcessorClouds.H"
 
     const instantList times = timeSelector::select0(runTime, args);
-
-    #include "createMesh.H"
-    const mpmGrid grid(mesh);
-    const processorClouds clouds(grid, nProcs);
 
     Info<< "Decomposing the clouds onto " << nProcs << " processors\n"
         << endl;

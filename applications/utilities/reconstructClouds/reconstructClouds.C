@@ -52,18 +52,11 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const label nProcs = fileHandler().nProcs(args.path());
-    if (!nProcs)
-    {
-        FatalErrorInFunction
-            << "case " << args.path() << " has no processor directories:"
-            << " nothing to reconstruct (decomposePar and a -parallel run"
-            << " make them)" << exit(FatalError);
-    }
-
-    #include "createMesh.H"
-    const mpmGrid grid(mesh);
-    const processorClouds clouds(grid, nProcs);
+    const string noProcessors
+    (
+        "nothing to reconstruct (decomposePar and a -parallel run make them)"
+    );
+    #include "createProcessorClouds.H"
 
     const instantList times = timeSelector::select(clouds.procTimes(), args);
     if (times.empty())
