@@ -20,8 +20,8 @@ def cell_counts(case):
 
 
 def split(counts, nProcs):
-    """(nx, ny, nz) with nx ny nz = nProcs and at least one cell per box
-    along each axis, the boxes as square as possible along x, y (and z on a
+    """(nx, ny, nz) with nx ny nz = nProcs and at least three cells per box
+    along each axis cut, the boxes as square as possible along x, y (and z on a
     3D grid); x cut first, then y, on a tie."""
     axes = 3 if counts[2] > 1 else 2
     best = None
@@ -29,7 +29,9 @@ def split(counts, nProcs):
         for ny in range(nProcs // nx, 0, -1):
             nz = nProcs // (nx * ny)
             n = (nx, ny, nz)
-            if nx * ny * nz != nProcs or any(n[d] > counts[d] for d in range(3)):
+            # at least three cells along a cut: a particle's stencil reaches
+            # two nodes beyond its cell
+            if nx * ny * nz != nProcs or any(n[d] > 1 and counts[d] // n[d] < 3 for d in range(3)):
                 continue
             sizes = [counts[d] / n[d] for d in range(axes)]
             aspect = max(sizes) / min(sizes)

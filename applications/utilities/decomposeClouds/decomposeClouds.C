@@ -24,7 +24,8 @@ Description
 
     Times: -time, -latestTime, -withZero (all but 0 by default); a time
     directory without a run's record (a fresh start) has nothing to
-    split: skipped, said so.
+    split, an incomplete one (its run stopped while writing it) is not
+    split: both skipped, said so.
 
 Usage
     \verbatim
@@ -66,17 +67,27 @@ int main(int argc, char *argv[])
     {
         runTime.setTime(t, 0);
         Info<< "Time = " << runTime.timeName() << endl;
-        if
-        (
-            mpmTime::state(runTime.timePath())
-         == mpmTime::directoryState::fresh
-        )
+        switch (mpmTime::state(runTime.timePath()))
         {
-            Info<< "    a fresh start (no run's record): nothing to split"
-                << endl;
-            continue;
+            case mpmTime::directoryState::fresh:
+            {
+                Info<< "    a fresh start (no run's record): nothing to"
+                    << " split" << endl;
+                break;
+            }
+            case mpmTime::directoryState::incomplete:
+            {
+                Info<< "    incomplete (its run was stopped while writing"
+                    << " it): not split; a run starts from the last"
+                    << " complete time" << endl;
+                break;
+            }
+            case mpmTime::directoryState::complete:
+            {
+                clouds.decompose();
+                break;
+            }
         }
-        clouds.decompose();
     }
 
     Info<< "\nEnd\n" << endl;

@@ -95,9 +95,15 @@ void Foam::barrierMonitor::finishSearch
         g.nodePosition(n, x);
         passLevel_ = max(passLevel_, point(x[0], x[1], x[2]) & overtopDir_);
     }
+    // (over every processor's part of a decomposed grid)
+    reduce(passLevel_, maxOp<scalar>());
     // No node inside a barrier thinner than the node spacing: its far
     // side, from its bounding box
-    if (contactNodes.empty() && bounds != boundBox::greatBox)
+    if
+    (
+        returnReduce(label(contactNodes.size()), sumOp<label>()) == 0
+     && bounds != boundBox::greatBox
+    )
     {
         const pointField corners(bounds.points());
         for (const point& c : corners)

@@ -115,7 +115,7 @@ void Foam::membraneBarrier::checkInMesh
     const boundBox mesh
     (
         point(g.origin[0], g.origin[1], g.origin[2]),
-        point(g.upper(0), g.upper(1), g.upper(2))
+        point(g.domainUpper(0), g.domainUpper(1), g.domainUpper(2))
     );
     if (!nodes.overlaps(mesh))
     {
@@ -135,8 +135,8 @@ void Foam::membraneBarrier::onPlaneSlice
     const dictionary& dict
 )
 {
-    structure_.acrossSlice(g.origin[1], g.upper(1), dict);
-    monitor_.perUnitWidth(g.upper(1) - g.origin[1]);
+    structure_.acrossSlice(g.origin[1], g.domainUpper(1), dict);
+    monitor_.perUnitWidth(g.domainUpper(1) - g.origin[1]);
 }
 
 
@@ -197,10 +197,17 @@ void Foam::membraneBarrier::advance(const double dt)
 void Foam::membraneBarrier::openFiles(const Time& runTime)
 {
     monitor_.openFiles(runTime, structure_.anchors().names());
-    vtk_.reset
-    (
-        new structureVTKWriter(runTime.path(), name_, runTime.startTimeIndex())
-    );
+    // Written once, by the master (every processor holds the structure)
+    if (Pstream::master())
+    {
+        vtk_.reset
+        (
+            new structureVTKWriter
+            (
+                runTime.globalPath(), name_, runTime.startTimeIndex()
+            )
+        );
+    }
 }
 
 
@@ -255,7 +262,8 @@ void Foam::membraneBarrier::report(Ostream& os) const
             << maxSubSteps_ << " (stable step " << structure_.stableTimeStep()
             << " s, " << structure_.limiter().c_str() << ")" << nl;
     }
-    os  << "    particles the guard put back: " << nPutBack_
+    os  << "    particles the guard put back: "
+        << returnReduce(nPutBack_, sumOp<label>())
         << " (the push held the rest)" << nl;
 }
 

@@ -10,6 +10,7 @@ License
 
 #include "membraneContact.H"
 #include "dictionary.H"
+#include "Pstream.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -229,6 +230,71 @@ Foam::membraneContact::membraneContact
 }
 
 
+void Foam::membraneContact::saveKicks(const structureNodes& n)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const double* v[3] = {n.vx.data(), n.vy.data(), n.vz.data()};
+    for (int d = 0; d < 3; ++d)
+    {
+        before_.v[d].assign(v[d], v[d] + n.size());
+        before_.anchored[d] = anchored_[d];
+    }
+    before_.dissipation = dissipation_;
+    before_.energy = energy_;
+    before_.force = force_;
+}
+
+
+void Foam::membraneContact::sumKicks(structureNodes& n)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // Every processor's changes, summed in the gather's fixed order: the
+    // same on every processor's copy
+    const label nn = n.size();
+    double* v[3] = {n.vx.data(), n.vy.data(), n.vz.data()};
+    List<scalar> change(6*nn + 5);
+    for (int d = 0; d < 3; ++d)
+    {
+        for (label i = 0; i < nn; ++i)
+        {
+            change[d*nn + i] = v[d][i] - before_.v[d][i];
+            change[(3 + d)*nn + i] = anchored_[d][i] - before_.anchored[d][i];
+        }
+    }
+    label k = 6*nn;
+    change[k++] = dissipation_ - before_.dissipation;
+    change[k++] = energy_ - before_.energy;
+    for (int d = 0; d < 3; ++d)
+    {
+        change[k++] = force_[d] - before_.force[d];
+    }
+    Pstream::listCombineGather(change, plusEqOp<scalar>());
+    Pstream::listCombineScatter(change);
+
+    for (int d = 0; d < 3; ++d)
+    {
+        for (label i = 0; i < nn; ++i)
+        {
+            v[d][i] = before_.v[d][i] + change[d*nn + i];
+            anchored_[d][i] = before_.anchored[d][i] + change[(3 + d)*nn + i];
+        }
+    }
+    k = 6*nn;
+    dissipation_ = before_.dissipation + change[k++];
+    energy_ = before_.energy + change[k++];
+    for (int d = 0; d < 3; ++d)
+    {
+        force_[d] = before_.force[d] + change[k++];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 const std::vector<Foam::membraneContact::push>&
@@ -249,6 +315,7 @@ Foam::membraneContact::pushParticles
     pushes_.clear();
     energy_ = 0;
     force_ = Zero;
+    saveKicks(surface.nodes());
     findNear(g, surface, p, particleNodes);
     reach_.resize(near_.size());
 
@@ -291,6 +358,7 @@ void Foam::membraneContact::kickMembrane
     // (The push's work is its energy's change: only the guard's kicks
     // are settled)
     surface.settleKicks();
+    sumKicks(surface.nodes());
 }
 
 
@@ -303,6 +371,7 @@ Foam::label Foam::membraneContact::stopCrossings
     const double dt
 )
 {
+    saveKicks(surface.nodes());
     const double h = g.hMax();
     const double rim = rimTolerance*h;
     const double gap = guardGap*h;
@@ -366,6 +435,7 @@ Foam::label Foam::membraneContact::stopCrossings
         ++nStopped;
     }
     force_ += vector(J[0], J[1], J[2])/dt;
+    sumKicks(surface.nodes());
     return nStopped;
 }
 

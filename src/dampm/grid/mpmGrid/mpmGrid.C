@@ -175,6 +175,27 @@ void Foam::mpmGrid::setPart(const label nOwn[3])
     // processor holds, so that every node its particles reach (one beyond
     // its cells' nodes) has its full-width neighbours (terrain gradients)
     geom_.decomposed = true;
+    for (int d = 0; d < geom_.dim; ++d)
+    {
+        // A particle's stencil reaches two nodes beyond its cell: a part
+        // thinner than three cells along a cut would not see its
+        // neighbour's neighbour
+        const label nMin = 3;
+        if (nOwn[d] < nMin && nOwn[d] < geom_.nCells[d])
+        {
+            FatalErrorInFunction
+                << "processor " << Pstream::myProcNo() << " of the decomposed"
+                << " case " << mesh_.time().globalPath() << " holds "
+                << nOwn[d] << " cell" << (nOwn[d] > 1 ? "s" : "")
+                << " along axis " << "xyz"[d] << " of the " << geom_.nCells[d]
+                << " there; allowed: at least " << nMin << " along every"
+                << " axis the decomposition cuts (a particle's stencil"
+                << " reaches two nodes beyond its cell). Use fewer"
+                << " subdomains along that axis in system/decomposeParDict,"
+                << " or tools/python/decomposition.py, which keeps them"
+                << " that thick" << exit(FatalError);
+        }
+    }
     for (int d = 0; d < 3; ++d)
     {
         geom_.nCellsDomain[d] = geom_.nCells[d];

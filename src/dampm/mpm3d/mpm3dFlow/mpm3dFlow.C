@@ -588,19 +588,11 @@ Foam::mpm3dFlow::mpm3dFlow
         }
         if (membraneBarrier::isMembrane(e.dict()))
         {
-            if (Pstream::parRun())
-            {
-                FatalIOErrorInFunction(e.dict())
-                    << "barrier " << e.keyword() << " is a flexible barrier"
-                    << " (a membrane), which mpm3dFoam does not split across"
-                    << " processors; allowed with -parallel: rigid barriers"
-                    << " (plane, box, triSurface, terrain); run it without"
-                    << " -parallel" << exit(FatalIOError);
-            }
             membranes_.append
             (
                 new membraneBarrier(e.keyword(), e.dict(), caseDir, g)
             );
+            // (every processor holds the structure whole)
             membranes_.last().checkInMesh(grid.geometry(), e.dict());
             if (grid.isPlane())
             {
@@ -838,6 +830,26 @@ void Foam::mpm3dFlow::findNodes()
 }
 
 
+void Foam::mpm3dFlow::zeroNodes
+(
+    const nodeBox& box,
+    double* const a[3]
+) const
+{
+    grid_.geometry().forEachNodeRow
+    (
+        box,
+        [&](const gridGeometry::index first, const gridGeometry::index last)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                std::fill(a[d] + first, a[d] + last, 0.0);
+            }
+        }
+    );
+}
+
+
 void Foam::mpm3dFlow::particlesToGrid()
 {
     const gridGeometry& g = grid_.geometry();
@@ -939,13 +951,27 @@ void Foam::mpm3dFlow::pushFromMembranes
         return;
     }
     const gridGeometry& g = grid_.geometry();
+    const gridDecomposition& parts = grid_.decomposition();
     const mpm3dParticles p = kernelView();
     const membraneContact::penalty stiffness
     {
         material_->rho(), material_->waveSpeed(), g.hMin(), maxCo,
         g.plane ? width() : 0
     };
-    double* const f[3] = {nodes_.fx.data(), nodes_.fy.data(), nodes_.fz.data()};
+    double* const fNode[3] =
+        {nodes_.fx.data(), nodes_.fy.data(), nodes_.fz.data()};
+    // A decomposed grid's node forces are complete sums already: the
+    // pushes go to a node sum of their own, completed, then added
+    double* f[3] = {fNode[0], fNode[1], fNode[2]};
+    if (parts.active())
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            pushForce_[d].resize(g.nNodes());
+            f[d] = pushForce_[d].data();
+        }
+        zeroNodes(sumNodes_, f);
+    }
     for (membraneBarrier& m : membranes_)
     {
         const std::vector<membraneContact::push>& pushes =
@@ -975,6 +1001,27 @@ void Foam::mpm3dFlow::pushFromMembranes
                             }
                         }
                     );
+                }
+            }
+        );
+    }
+    if (parts.active())
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            parts.sumNodes(f[d], 1);
+        }
+        g.forEachNodeRow
+        (
+            sumNodes_,
+            [&](const gridGeometry::index first, const gridGeometry::index last)
+            {
+                for (int d = 0; d < 3; ++d)
+                {
+                    for (gridGeometry::index n = first; n < last; ++n)
+                    {
+                        fNode[d][n] += f[d][n];
+                    }
                 }
             }
         );

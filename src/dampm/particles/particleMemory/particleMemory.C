@@ -115,15 +115,17 @@ double Foam::particleMemory::seedsInBox
 )
 {
     // Per axis: the positions origin + (k + 1/2) s in [min, max], s the
-    // spacing, k from 0 to nCells nPerCell - 1 (one across a plane slice)
+    // spacing, k over the cells this part owns (all of them but on a
+    // decomposed grid), nPerCell per cell (one across a plane slice)
     double n = 1;
     for (int d = 0; d < g.dim; ++d)
     {
         const label perCell = g.varies(d) ? nPerCell : 1;
         const double s = g.dx[d]/perCell;
-        const double last = g.nCells[d]*perCell - 1;
+        const double first = (g.offset[d] + g.ownFirst(d))*perCell;
+        const double last = (g.offset[d] + g.ownEnd(d))*perCell - 1;
         const double lo =
-            max(std::ceil((box.min()[d] - g.origin[d])/s - 0.5), 0.0);
+            max(std::ceil((box.min()[d] - g.origin[d])/s - 0.5), first);
         const double hi =
             min(std::floor((box.max()[d] - g.origin[d])/s - 0.5), last);
         n *= max(hi - lo + 1, 0.0);

@@ -113,7 +113,9 @@ Foam::PtrList<Foam::dictionary> Foam::processorClouds::readProcStates
         if (!(is.good() && header.readHeader(is)))
         {
             FatalErrorInFunction
-                << "cannot read " << path << exit(FatalError);
+                << "cannot read " << path << ", which processor0's time "
+                << procTimePath(0).name() << " has: the processor"
+                << " directories are not of one run" << exit(FatalError);
         }
         dicts.set(proci, new dictionary(is));
     }
@@ -428,6 +430,16 @@ Foam::label Foam::processorClouds::reconstruct() const
     const Time& runTime = grid_.mesh().time();
     forAll(procTimes_, proci)
     {
+        // A time decomposePar made, not a decomposed run: its uniform/ is
+        // the case's own, through a link
+        const fileName uniform(procTimePath(proci)/"uniform");
+        if (Foam::type(uniform, false) == fileName::LINK)
+        {
+            Info<< "    not written by a decomposed run (" << uniform
+                << " is decomposePar's link to the case's): left as it is"
+                << endl;
+            return 0;
+        }
         checkComplete(procTimePath(proci));
     }
 
