@@ -22,7 +22,8 @@ Description
     serial run's restart, or the start depthToParticles3D wrote.
     reconstructClouds does the reverse.
 
-    Times: -time, -latestTime, -withZero (all but 0 by default); a time
+    Times: as decomposePar, the start time (system/controlDict) unless
+    -time, -latestTime or -withZero select others; a time
     directory without a run's record (a fresh start) has nothing to
     split, an incomplete one (its run stopped while writing it) is not
     split: both skipped, said so.
@@ -59,7 +60,8 @@ int main(int argc, char *argv[])
     const string noProcessors("run decomposePar first");
     #include "createProcessorClouds.H"
 
-    const instantList times = timeSelector::select0(runTime, args);
+    // As decomposePar: the start time, unless times are selected
+    const instantList times = timeSelector::selectIfPresent(runTime, args);
 
     Info<< "Decomposing the clouds onto " << nProcs << " processors\n"
         << endl;
