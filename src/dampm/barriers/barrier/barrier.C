@@ -79,7 +79,7 @@ void Foam::barrier::describe(Ostream& os) const
     geometry_->describe(os);
     os  << ", ";
     condition_.describe(os);
-    os  << ", " << contact_.nodes().size() << " contact nodes";
+    os  << ", " << contact_.nNodesTotal() << " contact nodes";
     monitor_.describe(os);
     os  << nl;
 }

@@ -35,6 +35,7 @@ Foam::nodeContact::nodeContact
     writePressure_(dict.getOrDefault<bool>("writePressure", false)),
     band_(0),
     onSurface_(0),
+    nOwned_(0),
     force_(Zero)
 {
     knownKeywords::add(dict, keywords);
@@ -90,10 +91,12 @@ void Foam::nodeContact::finishSearch
     share_.assign(nodes_.size(), 1.0);
     // A decomposed grid's part counts the force of the nodes it owns only:
     // the processors' sums add up to the whole barrier's
+    nOwned_ = 0;
     forAll(nodes_, c)
     {
-        share_[c] =
-            g.ownsNode(nodes_[c]) ? domainShare(g, wall, nodes_[c]) : 0;
+        const bool own = g.ownsNode(nodes_[c]);
+        share_[c] = own ? domainShare(g, wall, nodes_[c]) : 0;
+        nOwned_ += own;
     }
 
     if (returnReduce(nodes_.size(), sumOp<label>()) == 0)

@@ -70,7 +70,7 @@ void Foam::mpmTime::checkStartTime()
         for (const instant& t : all)
         {
             // (OpenFOAM lists constant/ as a time 0)
-            if (t.name() != constant() && t.equal(value()))
+            if (t.name() != constant() && sameTime(t.value(), value()))
             {
                 setTime(t, timeIndex());
                 break;
@@ -154,6 +154,14 @@ void Foam::mpmTime::continueStart()
 }
 
 
+bool Foam::mpmTime::sameTime(const scalar a, const scalar b)
+{
+    // (instant::equal's absolute SMALL is below half the spacing of
+    // doubles from 8 s on: 30 would not equal 30)
+    return mag(a - b) <= 1e-12*max(scalar(1), mag(b));
+}
+
+
 void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
 {
     // A processor stopped while writing has an earlier complete time than
@@ -173,7 +181,7 @@ void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
     }
     const scalar mine = from >= 0 ? all[from].value() : value();
     const scalar common = returnReduce(mine, minOp<scalar>());
-    const bool own = from < 0 && instant(mine).equal(common);
+    const bool own = from < 0 && sameTime(mine, common);
     if (returnReduce(own, andOp<bool>()))
     {
         if (from == ownStart)
@@ -186,11 +194,11 @@ void Foam::mpmTime::agreeStartTime(const instantList& all, const label from)
     {
         if
         (
-            all[i].name() != constant() && all[i].equal(common)
+            all[i].name() != constant() && sameTime(all[i].value(), common)
          && state(path(), all, i) == directoryState::complete
         )
         {
-            if (!instant(mine).equal(common))
+            if (!sameTime(mine, common))
             {
                 WarningInFunction
                     << "processor" << Pstream::myProcNo() << " starts from"
