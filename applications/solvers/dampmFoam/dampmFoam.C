@@ -130,14 +130,8 @@ int main(int argc, char *argv[])
     {
         handOff3D.reportNotDue(Info);
     }
-    if (Pstream::parRun())
-    {
-        Info<< "Columns moved between processors: "
-            << flow.migration().nMoved() << nl
-            << "Communication (node sums, moves; in P2G and G2P): "
-            << returnReduce(grid.decomposition().commTime(), maxOp<scalar>())
-            << " s on the slowest processor" << nl << endl;
-    }
+    const string movedWhat("Columns");
+    #include "reportMigration.H"
     timers.report(Info);
     runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;

@@ -126,14 +126,8 @@ int main(int argc, char *argv[])
         timers.run(stepTimers::IO, [&]{ eventMaps->writeRasters(runTime); });
     }
     #include "reportBarriers.H"
-    if (Pstream::parRun())
-    {
-        Info<< "Particles moved between processors: "
-            << flow.migration().nMoved() << nl
-            << "Communication (node sums, moves; in P2G and G2P): "
-            << returnReduce(grid.decomposition().commTime(), maxOp<scalar>())
-            << " s on the slowest processor" << nl << endl;
-    }
+    const string movedWhat("Particles");
+    #include "reportMigration.H"
     timers.report(Info);
     runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;

@@ -11,6 +11,7 @@ License
 #include "depthAveragedDiagnostics.H"
 #include "staticSwitches.H"
 #include "orderedSums.H"
+#include "processorTotals.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -85,23 +86,8 @@ Foam::depthAveragedDiagnostics::totals Foam::depthAveragedDiagnostics::sum
         terrain
     );
 
-    // Over every processor of a decomposed run (summed in the gather's
-    // fixed order: the same on any run of that decomposition)
-    label nTotal = n;
-    if (Pstream::parRun())
-    {
-        List<scalar> S({sums[0], sums[1], scalar(n)});
-        List<scalar> mx(7);
-        std::copy_n(maxima, 7, mx.begin());
-        Pstream::listCombineGather(S, plusEqOp<scalar>());
-        Pstream::listCombineScatter(S);
-        Pstream::listCombineGather(mx, maxEqOp<scalar>());
-        Pstream::listCombineScatter(mx);
-        sums[0] = S[0];
-        sums[1] = S[1];
-        nTotal = label(S[2]);
-        std::copy_n(mx.begin(), 7, maxima);
-    }
+    // Over every processor of a decomposed run
+    const label nTotal = processorTotals<2, 7>(sums, maxima, n);
 
     totals t;
     t.mass = sums[0];

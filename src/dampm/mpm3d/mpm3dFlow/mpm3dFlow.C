@@ -11,6 +11,7 @@ License
 #include "mpm3dFlow.H"
 #include "knownKeywords.H"
 #include "orderedSums.H"
+#include "processorTotals.H"
 #include "visitShape.H"
 #include "stencil.H"
 #include "particleCloudIO.H"
@@ -568,10 +569,9 @@ Foam::mpm3dFlow::mpm3dFlow
     const gridGeometry& geom = grid.geometry();
     for (int d = 0; d < 3; ++d)
     {
-        settings_.wall[d][0] = domainWall_[d][0] && geom.offset[d] == 0;
+        settings_.wall[d][0] = domainWall_[d][0] && geom.ownFirst(d) == 0;
         settings_.wall[d][1] =
-            domainWall_[d][1]
-         && geom.offset[d] + geom.nCells[d] == geom.nCellsDomain[d];
+            domainWall_[d][1] && geom.ownEnd(d) == geom.nCells[d];
     }
 
     // Barriers (their files in the case, not a processor directory)
@@ -1153,23 +1153,8 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
         }
     });
 
-    // Over every processor of a decomposed run (summed in the gather's
-    // fixed order: the same on any run of that decomposition)
-    label nTotal = n;
-    if (Pstream::parRun())
-    {
-        List<scalar> sums(7), maxima(7);
-        std::copy_n(S, 6, sums.begin());
-        sums[6] = n;
-        std::copy_n(mx, 7, maxima.begin());
-        Pstream::listCombineGather(sums, plusEqOp<scalar>());
-        Pstream::listCombineScatter(sums);
-        Pstream::listCombineGather(maxima, maxEqOp<scalar>());
-        Pstream::listCombineScatter(maxima);
-        std::copy_n(sums.begin(), 6, S);
-        nTotal = label(sums[6]);
-        std::copy_n(maxima.begin(), 7, mx);
-    }
+    // Over every processor of a decomposed run
+    const label nTotal = processorTotals<6, 7>(S, mx, n);
 
     totals t;
     t.nParticles = nTotal;
