@@ -121,7 +121,7 @@ TEST(mpm3dKernels, WallFoldSpansHoldEveryFoldedTripleWhole)
     const gridGeometry g = channel();
     std::mt19937 gen(7);
     particleArrays p = layerAndBlock(g, gen);
-    p.sortByCell(g, maxStale);
+    p.sortByCell(g, scatterSchedule(g, 3 + 2*maxStale));
     const nodeBox box = p.stencilNodes(g);
 
     nodeRowSpans rows;
@@ -181,7 +181,7 @@ TEST(mpm3dKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
             x[1][i] = std::min(std::max(x[1][i], 1.5*g.dx[1]), 6.5*g.dx[1]);
             x[2][i] = std::min(std::max(x[2][i], 2*g.dx[2]), 4*g.dx[2]);
         }
-        p.sortByCell(g, maxStale);
+        p.sortByCell(g, scatterSchedule(g, 3 + 2*maxStale));
 
         // As mpm3dFlow::particlesToGrid
         active = particleBox;

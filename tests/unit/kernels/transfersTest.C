@@ -62,7 +62,7 @@ particleArrays makeParticles(const gridGeometry& g, const int dim)
         }
         p.component(particleArrays::M)[i] = 0.5 + u(gen);
     }
-    p.sortByCell(g);
+    p.sortByCell(g, scatterSchedule(g));
     return p;
 }
 
@@ -81,7 +81,7 @@ void particlesToGrid
 {
     particlesToGridMomentum<Dim>
     (
-        g, schedule, kernel, p.stencilNodes(g), p.cellStart().data(),
+        g, schedule, kernel, p.stencilNodes(g), p.binStart().data(),
         affineArraysOf<Dim>(p, gradU), mass, mom
     );
 }
@@ -353,7 +353,7 @@ TEST(transfers, StaleBinningWithinTheScheduleReachStaysRaceFreeAndConservative)
             }
             mP += p.component(particleArrays::M)[i];
         }
-        ASSERT_FALSE(p.sortByCell(g, schedule.maxStale()));
+        ASSERT_FALSE(p.sortByCell(g, schedule));
         const int maxThreads = omp_get_max_threads();
         std::vector<double> m1(g.nNodes()), m2(g.nNodes());
         std::vector<double> q1[3], q2[3];

@@ -120,6 +120,83 @@ TEST(particleArrays, FiniteFindsOneNaNOrInfinityInAnyColumn)
 }
 
 
+// In a schedule's tile order (tiles of 5 x 5 cells on a 16 x 9 grid: partial
+// tiles at the ends) each cell's and each tile's particles are one range,
+// the cells in rank order; the particles are the plain sort's, permuted;
+// the stencil rows are the plain order's; a restart's bins are kept
+TEST(particleArrays, SortInTileOrderStoresEveryTileContiguously)
+{
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 5);
+    ASSERT_EQ(o.nRanks(), 4*2*25);
+    particleArrays p = randomParticles(g, 5000);
+    particleArrays plain = randomParticles(g, 5000);
+    p.sortByCell(g, o, 1);
+    plain.sortByCell(g, tileCellOrder(g, 1), 1);
+
+    const std::vector<label>& binStart = p.binStart();
+    ASSERT_EQ(label(binStart.size()), o.nRanks() + 1);
+    EXPECT_EQ(binStart.back(), p.size());
+    const label id = p.field("id").first;
+    const double* x = p.component(particleArrays::X);
+    const double* y = p.component(particleArrays::Y);
+    for (label j = 0; j < g.nCells[1]; ++j)
+    {
+        for (label i = 0; i < g.nCells[0]; ++i)
+        {
+            const label c = g.cellIndex(i, j, 0);
+            const label r = o.rank(c);
+            EXPECT_EQ(r, o.rank(i, j, 0));
+            // Tile (i/5, j/5), and within it cell (i%5, j%5)
+            EXPECT_EQ(r, (i/5 + 4*(j/5))*25 + i % 5 + 5*(j % 5));
+            const label cPlain = plain.binStart()[c];
+            ASSERT_EQ
+            (
+                binStart[r + 1] - binStart[r],
+                plain.binStart()[c + 1] - cPlain
+            );
+            for (label k = binStart[r]; k < binStart[r + 1]; ++k)
+            {
+                EXPECT_EQ(g.cellOf(x[k], y[k], 0), c);
+                EXPECT_EQ(p.cell()[k], c);
+                // Stable: the plain sort's particles of the cell, in order
+                EXPECT_EQ
+                (
+                    p.component(id)[k],
+                    plain.component(id)[cPlain + k - binStart[r]]
+                );
+            }
+        }
+    }
+    // A tile's particles: ranks firstRank(t) .. firstRank(t + 1) - 1
+    for (label t = 0; t < 8; ++t)
+    {
+        const label last = binStart[o.firstRank(t + 1)];
+        for (label k = binStart[o.firstRank(t)]; k < last; ++k)
+        {
+            const label c = p.cell()[k];
+            EXPECT_EQ((c % 16)/5 + 4*((c/16)/5), t);
+        }
+    }
+
+    nodeRowSpans rows, rowsPlain;
+    p.stencilRows(g, 1, rows);
+    plain.stencilRows(g, 1, rowsPlain);
+    EXPECT_TRUE(rows.lo == rowsPlain.lo);
+    EXPECT_TRUE(rows.hi == rowsPlain.hi);
+
+    // A restart: the bins set again are kept by a sort in the same order
+    const std::vector<label> bins = p.cell();
+    particleArrays q = p;
+    ASSERT_TRUE(q.setBins(g, bins));
+    EXPECT_FALSE(q.sortByCell(g, o, 1));
+    EXPECT_TRUE(q.binStart() == binStart);
+    // In another order they are not sorted: re-binned
+    EXPECT_TRUE(q.sortByCell(g, tileCellOrder(g, 1), 1));
+    EXPECT_TRUE(q.binStart() == plain.binStart());
+}
+
+
 TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
 {
     const gridGeometry g = grid2D();
@@ -128,14 +205,14 @@ TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
 
     const label id = p.field("id").first;
     const label tag = p.field("tag").first;
-    const std::vector<label>& cellStart = p.cellStart();
-    ASSERT_EQ(label(cellStart.size()), g.nCellsTotal() + 1);
-    EXPECT_EQ(cellStart.back(), p.size());
+    const std::vector<label>& binStart = p.binStart();
+    ASSERT_EQ(label(binStart.size()), g.nCellsTotal() + 1);
+    EXPECT_EQ(binStart.back(), p.size());
 
     std::vector<int> seen(p.size(), 0);
     for (label c = 0; c < g.nCellsTotal(); ++c)
     {
-        for (label i = cellStart[c]; i < cellStart[c + 1]; ++i)
+        for (label i = binStart[c]; i < binStart[c + 1]; ++i)
         {
             const double* x = p.component(particleArrays::X);
             const double* y = p.component(particleArrays::Y);
@@ -146,7 +223,7 @@ TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
             EXPECT_EQ(p.component(particleArrays::M)[i], 1.0 + orig);
             EXPECT_EQ(p.component(tag + 2)[i], 3.0*orig);
             // Stable: within a cell the original order is kept
-            if (i > cellStart[c])
+            if (i > binStart[c])
             {
                 EXPECT_LT(p.component(id)[i - 1], p.component(id)[i]);
             }
@@ -163,8 +240,8 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
 {
     const gridGeometry g = grid2D();
     particleArrays p = randomParticles(g, 2000);
-    EXPECT_TRUE(p.sortByCell(g, 1));
-    const std::vector<label> cellStart = p.cellStart();
+    EXPECT_TRUE(p.sortByCell(g, tileCellOrder(g, 1), 1));
+    const std::vector<label> binStart = p.binStart();
 
     // Every particle moves by less than one cell: the binning is kept
     double* x = p.component(particleArrays::X);
@@ -173,12 +250,12 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
         x[i] = std::min(std::max(x[i] + 0.9*g.dx[0]*((i % 3) - 1), 0.0),
             g.upper(0));
     }
-    EXPECT_FALSE(p.sortByCell(g, 1));
-    EXPECT_TRUE(p.cellStart() == cellStart);
+    EXPECT_FALSE(p.sortByCell(g, tileCellOrder(g, 1), 1));
+    EXPECT_TRUE(p.binStart() == binStart);
 
     // One particle two cells away: re-binned, and sorted again
     x[7] = x[7] > g.upper(0)/2 ? x[7] - 2.5*g.dx[0] : x[7] + 2.5*g.dx[0];
-    EXPECT_TRUE(p.sortByCell(g, 1));
+    EXPECT_TRUE(p.sortByCell(g, tileCellOrder(g, 1), 1));
     for (label i = 1; i < p.size(); ++i)
     {
         EXPECT_LE(p.cell()[i - 1], p.cell()[i]);
@@ -213,7 +290,7 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
         x[1][i] = u(gen)*g.upper(1);
         x[2][i] = 0.5 + 0.6*x[0][i] + 0.25*u(gen);
     }
-    EXPECT_TRUE(p.sortByCell(g, maxStale));
+    EXPECT_TRUE(p.sortByCell(g, tileCellOrder(g, 1), maxStale));
 
     // Moved by up to 0.9 cells per axis: still in their bins' reach (the
     // sort moved the columns: their addresses again)
@@ -232,7 +309,7 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
             );
         }
     }
-    EXPECT_FALSE(p.sortByCell(g, maxStale));
+    EXPECT_FALSE(p.sortByCell(g, tileCellOrder(g, 1), maxStale));
 
     nodeRowSpans rows;
     p.stencilRows(g, maxStale, rows);

@@ -100,7 +100,7 @@ Foam::shallowColumns Foam::bareTransport::columns
 
 void Foam::bareTransport::scatter(particleArrays& p, const label gradU)
 {
-    p.sortByCell(g_, schedule_.maxStale());
+    p.sortByCell(g_, schedule_);
 
     // The nodes the columns touch, and those of last step to clear them
     activeNodes_ = stencilNodes_;
@@ -108,7 +108,7 @@ void Foam::bareTransport::scatter(particleArrays& p, const label gradU)
     activeNodes_.unite(stencilNodes_);
     zeroNodes(g_, activeNodes_, nodes_);
 
-    const columnScatter sc{g_, stencilNodes_, schedule_, p.cellStart().data()};
+    const columnScatter sc{g_, stencilNodes_, schedule_, p.binStart().data()};
     scatterMomentum(sc, quadraticBSplineKernel(), nodes_, columns(p, gradU));
 }
 
@@ -206,7 +206,7 @@ void Foam::bareTransport::shallowWater(particleArrays& p, const double dt)
 
     scatter(p, gradU_);
     nodeHeights(g_, activeNodes_, nodes_, rho_, massTol_, false, nullptr);
-    const columnScatter sc{g_, stencilNodes_, schedule_, p.cellStart().data()};
+    const columnScatter sc{g_, stencilNodes_, schedule_, p.binStart().data()};
     scatterForces<quadraticBSplineKernel, true, false, false, true, false>
     (
         sc, quadraticBSplineKernel(), nodes_, columns(p, gradU_), rho_,

@@ -510,7 +510,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
     }
     const gridGeometry& g = grid_.geometry();
     const gridDecomposition& parts = grid_.decomposition();
-    particles_.sortByCell(g, schedule_.maxStale());
+    particles_.sortByCell(g, schedule_);
 
     // Work on the nodes the columns touch, and clear those of last step
     // (decomposed: also the shared nodes a neighbour's columns reach)
@@ -525,7 +525,7 @@ void Foam::depthAveragedFlow::particlesToGrid()
     const shallowColumns cols = columns();
     const columnScatter scatter
     {
-        g, stencilNodes_, schedule_, particles_.cellStart().data()
+        g, stencilNodes_, schedule_, particles_.binStart().data()
     };
     visitShape
     (
@@ -688,7 +688,7 @@ void Foam::depthAveragedFlow::computeForces()
     const shallowColumns cols = columns();
     const columnScatter scatter
     {
-        g, stencilNodes_, schedule_, particles_.cellStart().data()
+        g, stencilNodes_, schedule_, particles_.binStart().data()
     };
 
     // One instantiation per combination of terms: a term a case does not

@@ -854,7 +854,7 @@ void Foam::mpm3dFlow::particlesToGrid()
 {
     const gridGeometry& g = grid_.geometry();
     const gridDecomposition& parts = grid_.decomposition();
-    particles_.sortByCell(g, schedule_.maxStale());
+    particles_.sortByCell(g, schedule_);
     findNodes();
     zeroNodes3D(g, activeNodes_, nodes_);
 
@@ -868,7 +868,7 @@ void Foam::mpm3dFlow::particlesToGrid()
                 pressureToGrid3D
                 (
                     g, schedule_, kernel, stencilNodes_,
-                    particles_.cellStart().data(), view, nodes_
+                    particles_.binStart().data(), view, nodes_
                 );
                 parts.sumNodes(nodes_.vol.data(), 1);
                 parts.sumNodes(nodes_.pV.data(), 1);
@@ -886,7 +886,7 @@ void Foam::mpm3dFlow::particlesToGrid()
             scatterNodeSums3D
             (
                 g, schedule_, kernel, stencilNodes_,
-                particles_.cellStart().data(), view, settings_, nodes_
+                particles_.binStart().data(), view, settings_, nodes_
             );
         }
     );
@@ -1077,7 +1077,7 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
             gridToParticles3D
             (
                 g, schedule_, kernel, stencilNodes_,
-                particles_.cellStart().data(), settings_, dt, nodes_, view
+                particles_.binStart().data(), settings_, dt, nodes_, view
             );
             if (settings_.smoothJ)
             {

@@ -13,6 +13,7 @@ License
 #include "OSspecific.H"
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <string>
 
 // * * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * //
@@ -183,6 +184,12 @@ Foam::Ostream& Foam::fastOFstream::write(const doubleScalar val)
     if (format() == BINARY)
     {
         return OFstream::write(val);
+    }
+    if (val == 0 && !std::signbit(val))
+    {
+        // The commonest value of a field over a sparse grid: its text "0"
+        // as a character, no conversion
+        return write(char('0'));
     }
     tape_.push_back(0);
     numbers_.push_back(val);

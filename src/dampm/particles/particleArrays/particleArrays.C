@@ -182,7 +182,7 @@ Foam::label Foam::particleArrays::removeFlagged
         // Compaction keeps the order: the binning stays, recounted
         if (binned_)
         {
-            countCells(label(cellStart_.size()) - 1);
+            countBins();
         }
     }
     return nRemoved;
@@ -220,17 +220,36 @@ void Foam::particleArrays::permute()
 }
 
 
-void Foam::particleArrays::countCells(const label nCells)
+bool Foam::particleArrays::countBins()
 {
-    cellStart_.assign(nCells + 1, 0);
+    rank_.resize(size_);
+    #pragma omp parallel for schedule(static)
     for (label i = 0; i < size_; ++i)
     {
-        ++cellStart_[cell_[i] + 1];
+        rank_[i] = binOrder_.rank(cell_[i]);
     }
-    for (label c = 0; c < nCells; ++c)
+    return countRanks();
+}
+
+
+bool Foam::particleArrays::countRanks()
+{
+    const label nRanks = binOrder_.nRanks();
+    binStart_.assign(nRanks + 1, 0);
+    label previous = 0;
+    bool sorted = true;
+    for (label i = 0; i < size_; ++i)
     {
-        cellStart_[c + 1] += cellStart_[c];
+        const label r = rank_[i];
+        sorted = sorted && previous <= r;
+        previous = r;
+        ++binStart_[r + 1];
     }
+    for (label r = 0; r < nRanks; ++r)
+    {
+        binStart_[r + 1] += binStart_[r];
+    }
+    return sorted;
 }
 
 
@@ -282,18 +301,27 @@ void Foam::particleArrays::stencilRows
     {
         return i < 0 ? 0 : (i > n ? n : i);
     };
-    for (index k = 0; k < g.nCells[2]; ++k)
+    // The particles of a row of cells within a tile are contiguous, sorted
+    // along x
+    const tileCellOrder& o = binOrder_;
+    const index T = o.T;
+    const index nt = o.nTiles[0]*o.nTiles[1]*o.nTiles[2];
+    for (index t = 0; t < nt; ++t)
     {
-        for (index j = 0; j < g.nCells[1]; ++j)
+        const index tj = (t/o.nTiles[0]) % o.nTiles[1];
+        const index tk = t/(o.nTiles[0]*o.nTiles[1]);
+        for (index r0 = o.firstRank(t); r0 < o.firstRank(t + 1); r0 += T)
         {
-            // A cell row's particles are contiguous, sorted by cell
-            const index row0 = g.cellIndex(0, j, k);
-            const label first = cellStart_[row0];
-            const label last = cellStart_[row0 + nx];
+            const label first = binStart_[r0];
+            const label last = binStart_[r0 + T];
             if (first == last)
             {
                 continue;
             }
+            const index l = (r0 - o.firstRank(t))/T;
+            const index j = tj*T + l % T;
+            const index k = tk*T + l/T;
+            const index row0 = g.cellIndex(0, j, k);
             const index lo = clip(cell_[first] - row0 - below, g.nNodesDir[0]);
             const index hi =
                 clip(cell_[last - 1] - row0 + above + 1, g.nNodesDir[0]);
@@ -352,13 +380,13 @@ bool Foam::particleArrays::setBins
     binned_ = label(bins.size()) == size_;
     for (label i = 0; binned_ && i < size_; ++i)
     {
-        binned_ =
-            bins[i] >= 0 && bins[i] < nCells && (!i || bins[i - 1] <= bins[i]);
+        binned_ = bins[i] >= 0 && bins[i] < nCells;
     }
     if (binned_)
     {
+        // Counted in the order of the next sortByCell
         cell_ = bins;
-        countCells(nCells);
+        binStart_.clear();
     }
     return binned_;
 }
@@ -367,10 +395,10 @@ bool Foam::particleArrays::setBins
 bool Foam::particleArrays::sortByCell
 (
     const gridGeometry& g,
+    const tileCellOrder& order,
     const label maxStale
 )
 {
-    const label nCells = g.nCellsTotal();
     const double* x = component(X);
     const double* y = component(Y);
     const double* z = component(Z);
@@ -378,11 +406,20 @@ bool Foam::particleArrays::sortByCell
     cell_.resize(size_);
     label* cellp = cell_.data();
 
-    // Keep the binning while every particle is near its bin
+    // A binning of another order (or a restart's) is kept if it is sorted
+    // in this one
     if
     (
-        maxStale > 0 && binned_ && label(cellStart_.size()) == nCells + 1
+        binned_
+     && (binOrder_ != order || label(binStart_.size()) != order.nRanks() + 1)
     )
+    {
+        binOrder_ = order;
+        binned_ = countBins();
+    }
+
+    // Keep the binning while every particle is near its bin
+    if (maxStale > 0 && binned_)
     {
         const label nx = g.nCells[0];
         const label nxy = g.nCells[0]*g.nCells[1];
@@ -405,44 +442,38 @@ bool Foam::particleArrays::sortByCell
         }
     }
 
+    // Counting sort by rank: binStart is the exclusive prefix sum of the
+    // counts
+    binOrder_ = order;
+    rank_.resize(size_);
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size_; ++i)
     {
         cellp[i] = g.cellOf(x[i], y[i], z[i]);
+        rank_[i] = order.rank(cellp[i]);
     }
-    bool sorted = true;
-    #pragma omp parallel for schedule(static) reduction(&&:sorted)
-    for (label i = 1; i < size_; ++i)
-    {
-        sorted = sorted && cellp[i - 1] <= cellp[i];
-    }
-
-    // Counting sort: cellStart is the exclusive prefix sum of the counts
-    countCells(nCells);
+    const bool sorted = countRanks();
     binned_ = true;
-
     if (sorted)
     {
         return true;
     }
 
-    count_.assign(cellStart_.begin(), cellStart_.end() - 1);
+    count_.assign(binStart_.begin(), binStart_.end() - 1);
     order_.resize(size_);
     for (label i = 0; i < size_; ++i)
     {
-        order_[count_[cellp[i]]++] = i;
+        order_[count_[rank_[i]]++] = i;
     }
     permute();
 
-    // The sorted cells follow from cellStart
+    // The bins in their new order
     #pragma omp parallel for schedule(static)
-    for (label c = 0; c < nCells; ++c)
+    for (label k = 0; k < size_; ++k)
     {
-        for (label k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
-        {
-            cellp[k] = c;
-        }
+        rank_[k] = cellp[order_[k]];
     }
+    cell_.swap(rank_);
     return true;
 }
 
