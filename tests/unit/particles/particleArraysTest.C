@@ -194,6 +194,22 @@ TEST(particleArrays, SortInTileOrderStoresEveryTileContiguously)
     // In another order they are not sorted: re-binned
     EXPECT_TRUE(q.sortByCell(g, tileCellOrder(g, 1), 1));
     EXPECT_TRUE(q.binStart() == plain.binStart());
+
+    // A restart's bins, particles removed before the first sort: kept, and
+    // counted then
+    particleArrays r = p;
+    ASSERT_TRUE(r.setBins(g, bins));
+    std::vector<char> flagged(r.size(), 0);
+    flagged[0] = flagged[17] = 1;
+    EXPECT_EQ(r.removeFlagged(flagged), 2);
+    EXPECT_FALSE(r.sortByCell(g, o, 1));
+    ASSERT_EQ(label(r.binStart().size()), o.nRanks() + 1);
+    EXPECT_EQ(r.binStart().back(), r.size());
+    for (label k = 0; k < r.size(); ++k)
+    {
+        const label rank = o.rank(r.cell()[k]);
+        EXPECT_TRUE(r.binStart()[rank] <= k && k < r.binStart()[rank + 1]);
+    }
 }
 
 

@@ -170,6 +170,10 @@ Foam::Ostream& Foam::fastOFstream::write(const char c)
     else
     {
         tape_.push_back(c);
+        if (tape_.size() >= tapeSize)
+        {
+            drain();
+        }
     }
     if (c == token::NL)
     {

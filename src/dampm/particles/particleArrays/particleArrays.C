@@ -179,10 +179,11 @@ Foam::label Foam::particleArrays::removeFlagged
         }
         cell_.resize(n);
         size_ = n;
-        // Compaction keeps the order: the binning stays, recounted
-        if (binned_)
+        // Compaction keeps the order: the binning stays, recounted (a
+        // restart's bins not yet counted stay for the next sortByCell)
+        if (binned_ && label(binStart_.size()) == binOrder_.nRanks() + 1)
         {
-            countBins();
+            binned_ = countBins();
         }
     }
     return nRemoved;
@@ -222,6 +223,20 @@ void Foam::particleArrays::permute()
 
 bool Foam::particleArrays::countBins()
 {
+    // Bins of another grid (more cells) are no binning of this one
+    const label nCells =
+        binOrder_.nCells[0]*binOrder_.nCells[1]*binOrder_.nCells[2];
+    bool inside = true;
+    #pragma omp parallel for schedule(static) reduction(&&:inside)
+    for (label i = 0; i < size_; ++i)
+    {
+        inside = inside && cell_[i] >= 0 && cell_[i] < nCells;
+    }
+    if (!inside)
+    {
+        binStart_.clear();
+        return false;
+    }
     rank_.resize(size_);
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size_; ++i)
@@ -296,7 +311,6 @@ void Foam::particleArrays::stencilRows
     // A particle binned in cell c is within maxStale cells of it, and its
     // stencil reaches from node c - 1 to c + 2 per axis (stencilBox)
     const index below = maxStale + 1 - nG, above = maxStale + 2 + nG;
-    const index nx = g.nCells[0];
     const auto clip = [](const index i, const index n)
     {
         return i < 0 ? 0 : (i > n ? n : i);
