@@ -258,7 +258,8 @@ void Foam::membraneContact::sumKicks(structureNodes& n)
     // same on every processor's copy
     const label nn = n.size();
     double* v[3] = {n.vx.data(), n.vy.data(), n.vz.data()};
-    List<scalar> change(6*nn + 5);
+    List<scalar>& change = before_.change;
+    change.setSize(6*nn + 5);
     for (int d = 0; d < 3; ++d)
     {
         for (label i = 0; i < nn; ++i)

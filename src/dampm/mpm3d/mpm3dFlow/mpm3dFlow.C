@@ -830,26 +830,6 @@ void Foam::mpm3dFlow::findNodes()
 }
 
 
-void Foam::mpm3dFlow::zeroNodes
-(
-    const nodeBox& box,
-    double* const a[3]
-) const
-{
-    grid_.geometry().forEachNodeRow
-    (
-        box,
-        [&](const gridGeometry::index first, const gridGeometry::index last)
-        {
-            for (int d = 0; d < 3; ++d)
-            {
-                std::fill(a[d] + first, a[d] + last, 0.0);
-            }
-        }
-    );
-}
-
-
 void Foam::mpm3dFlow::particlesToGrid()
 {
     const gridGeometry& g = grid_.geometry();
@@ -970,7 +950,7 @@ void Foam::mpm3dFlow::pushFromMembranes
             pushForce_[d].resize(g.nNodes());
             f[d] = pushForce_[d].data();
         }
-        zeroNodes(sumNodes_, f);
+        zeroNodeArrays(g, sumNodes_, {f[0], f[1], f[2]});
     }
     for (membraneBarrier& m : membranes_)
     {

@@ -226,22 +226,20 @@ bool Foam::particleArrays::countBins()
     // Bins of another grid (more cells) are no binning of this one
     const label nCells =
         binOrder_.nCells[0]*binOrder_.nCells[1]*binOrder_.nCells[2];
+    rank_.resize(size_);
     bool inside = true;
     #pragma omp parallel for schedule(static) reduction(&&:inside)
     for (label i = 0; i < size_; ++i)
     {
-        inside = inside && cell_[i] >= 0 && cell_[i] < nCells;
+        const label c = cell_[i];
+        const bool in = c >= 0 && c < nCells;
+        inside = inside && in;
+        rank_[i] = in ? binOrder_.rank(c) : 0;
     }
     if (!inside)
     {
         binStart_.clear();
         return false;
-    }
-    rank_.resize(size_);
-    #pragma omp parallel for schedule(static)
-    for (label i = 0; i < size_; ++i)
-    {
-        rank_[i] = binOrder_.rank(cell_[i]);
     }
     return countRanks();
 }
