@@ -44,7 +44,8 @@ _COMPONENTS = (("symmtensor2d", 3), ("tensor2d", 4), ("symmtensor", 6), ("spheri
 class _FoamFile:
     """An OpenFOAM file: its FoamFile header and its bytes. Binary files
     (format binary) hold their lists as blocks of bytes, 'N(' then N
-    elements then ')', with labels and scalars of the header's arch."""
+    elements then ')' (an empty one: '0' alone), with labels and scalars of
+    the header's arch."""
 
     def __init__(self, path):
         self.path = path
@@ -84,10 +85,15 @@ class _FoamFile:
             return _list_after(text, start)
         if self.cls.startswith("cloud<"):
             return self.positions(start)
-        m = re.compile(rb"(\d+)\s*([({])").search(self.data, start)
+        m = re.compile(rb"(\d+)\s*([({]?)").search(self.data, start)
         if not m:
             raise ValueError("%s: no list found" % self.path)
         n = int(m.group(1))
+        if n == 0:
+            # An empty binary list is its size alone
+            return 0, np.empty(0)
+        if not m.group(2):
+            raise ValueError("%s: no list found" % self.path)
         if m.group(2) == b"{":
             return _list_after(self.data[m.start():].decode("latin-1"), 0)
         k = self.components()

@@ -2,9 +2,10 @@
 (tests/cases/faults/stopAndRestart*/check): a run that is stopped (SIGTERM,
 SIGINT, SIGKILL at random moments, a full disk) leaves its last complete
 time directory intact and restarts from it into the same answer, byte for
-byte, in ASCII at writePrecision 6 and in binary; a restart refuses, by
-name, an incomplete directory it cannot fall back from, a complete one
-missing a piece, and a corrupt cloud."""
+byte, with the cloud in binary (the default) or ASCII, the fields in ASCII
+at writePrecision 6 or binary; a restart refuses, by name, an incomplete
+directory it cannot fall back from, a complete one missing a piece, and a
+corrupt (ASCII) cloud."""
 import os
 import random
 import re
@@ -65,18 +66,38 @@ def stopBySignal(c, ref, times, sig):
     fc.sameRowsAfter(ref, run, c.solver, stopTime, name + " restart")
 
 
-def binary(c, ref, times):
-    run = fc.newRun("binary", entries={"writeFormat": "binary"})
+def formatVariant(c, ref, times, name, entries, cloudFormat):
+    """A run with controlDict entries: its cloud written in cloudFormat,
+    every summary row that of ref, and a restart from its first write that
+    ends in its own final files, byte for byte. Returns the run."""
+    run = fc.newRun(name, entries=entries)
     status, out = c.run(run)
-    fc.checkAccepted("binary", status, out)
-    positions = open(os.path.join(run, times[1], "lagrangian", c.cloud, "positions"), "rb").read()
-    check(b"format      binary" in positions, "binary: the cloud is written in binary")
+    fc.checkAccepted(name, status, out)
+    check(cloudWrittenIn(run, times[1], c.cloud, cloudFormat),
+          "%s: the cloud is written in %s" % (name, cloudFormat))
     check(fc.summaryRows(run, c.solver) == fc.summaryRows(ref, c.solver),
-          "binary: every summary row that of the ASCII run")
-    restart = fc.newRun("binaryRestart", base=run, times=[times[1]])
+          "%s: every summary row that of the reference run" % name)
+    restart = fc.newRun(name + "Restart", base=run, times=[times[1]])
     status, out = c.run(restart)
-    fc.checkAccepted("binary restart", status, out)
-    fc.sameFiles(run, restart, times[-1], c.finalFiles(run, times[-1]), "binary restart")
+    fc.checkAccepted(name + " restart", status, out)
+    fc.sameFiles(run, restart, times[-1], c.finalFiles(run, times[-1]), name + " restart")
+    return run
+
+
+def cloudWrittenIn(case, time, cloud, fmt):
+    positions = open(os.path.join(case, time, "lagrangian", cloud, "positions"), "rb").read()
+    return ("format      %s;" % fmt).encode() in positions
+
+
+def formats(c, ref, times):
+    """The reference writes its cloud in binary (cloudFormat's default) and
+    its fields in ASCII at writePrecision 6; everything in binary, and the
+    cloud in ASCII (17 digits), give the same rows and restart exactly.
+    Returns the run with the ASCII cloud."""
+    check(cloudWrittenIn(ref, times[1], c.cloud, "binary"),
+          "ref: the cloud is written in binary by default")
+    formatVariant(c, ref, times, "binary", {"writeFormat": "binary"}, "binary")
+    return formatVariant(c, ref, times, "asciiCloud", {"cloudFormat": "ascii"}, "ascii")
 
 
 def killed(c, times, nKills=8, seed=5):
@@ -173,6 +194,7 @@ def missingPieces(c, ref, times):
 
 
 def corruptClouds(c, ref, times):
+    """Edits of an ASCII cloud (ref: a run with cloudFormat ascii)."""
     t = times[1]
     for name, (field, edit, words) in c.corruptions.items():
         run = fc.newRun(name, base=ref, times=[t])

@@ -214,8 +214,8 @@ def identicalFiles(runA, runB, time, names, solver="dampmFoam"):
     byte (the same run on another number of threads)."""
     base = os.path.join(str(time), "lagrangian", clouds[solver])
     for name in names:
-        a = open(os.path.join(runA, base, name)).read()
-        b = open(os.path.join(runB, base, name)).read()
+        a = open(os.path.join(runA, base, name), "rb").read()
+        b = open(os.path.join(runB, base, name), "rb").read()
         check(a == b, "%s and %s: %s/%s identical, byte for byte" % (runA, runB, base, name))
 
 

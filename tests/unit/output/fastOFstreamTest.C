@@ -11,9 +11,15 @@ Description
     20,000 doubles of every magnitude, signed zeros, denormals, infinities,
     and floats, at precisions 6, 12, 16 and 17; and numbers between words,
     labels, changes of precision, short, uniform and long lists, longer
-    than the tape it formats in parallel), and counts lines as OFstream
+    than the tape it formats in parallel, labels among the numbers as in
+    a cloud's positions), and counts lines as OFstream
     does; OpenFOAM's reader reads 200,000 normal doubles within
-    1e+-290 written at exactPrecision back as the same doubles.
+    1e+-290 written at exactPrecision back as the same doubles. Point
+    fields (scalar and vector; mostly zeros, signed zeros, every magnitude;
+    uniform), a cloud's vector field and lists (long, short, empty,
+    uniform, of labels) written by
+    fastWriteIO and writeList, whose long lists are formatted from memory,
+    are byte for byte OpenFOAM's, in ASCII and binary.
 
 \*---------------------------------------------------------------------------*/
 
@@ -22,6 +28,10 @@ Description
 #include "exactPrecision.H"
 #include "scalarList.H"
 #include "vectorField.H"
+#include "labelList.H"
+#include "pointFields.H"
+#include "IOField.H"
+#include "testCase.H"
 #include "OSspecific.H"
 #include "IFstream.H"
 #include <gtest/gtest.h>
@@ -139,6 +149,16 @@ TEST(fastOFstream, MixedContentKeepsItsOrderAcrossTheTape)
             << scalarList(20, 0.25) << nl << 1.0/7 << nl;
         os.precision(17);
         os  << 1.0/7 << nl;
+
+        // Integers between numbers on the tape, as a cloud's positions
+        // ((x y z) celli, more lines than the tape holds), an integer
+        // beyond a double's, and the characters that mark the tape
+        forAll(points, i)
+        {
+            os  << points[i] << token::SPACE << label(i - 7) << nl;
+        }
+        os  << int64_t(-9007199254740993) << token::SPACE
+            << labelList({3, -4, 5}) << char(0) << char(1) << 2.5 << nl;
         os.indent();
         os  << vector(1, 2, 3) << endl;
     };
@@ -191,3 +211,114 @@ TEST(fastOFstream, OpenFOAMReadsExactPrecisionBackExactly)
 
 
 // ************************************************************************* //
+
+
+TEST(fastOFstream, FieldsAndListsFormattedFromMemoryAreOpenFOAMs)
+{
+    const fileName dir = scratchDir("fastOFstreamCase");
+    rmDir(dir);
+    mkDir(dir/"constant");
+    cp(testCase::meshDir("box2D")/"system", dir);
+    cp(testCase::meshDir("box2D")/"constant"/"polyMesh", dir/"constant");
+    testCase tc(dir);
+    const pointMesh& pMesh = pointMesh::New(tc.mesh());
+    const scalarList values(testValues());
+
+    auto io = [&](const word& name)
+    {
+        return IOobject(name, "0", tc.mesh(), IOobject::NO_READ);
+    };
+    fastWriteIO<pointScalarField> h
+    (
+        io("h"), pMesh, dimensionedScalar("zero", dimLength, 0)
+    );
+    fastWriteIO<pointVectorField> U
+    (
+        io("U"), pMesh, dimensionedVector("zero", dimVelocity, Zero)
+    );
+    fastWriteIO<pointScalarField> Z
+    (
+        io("Z"), pMesh, dimensionedScalar("Z", dimLength, 2.5)
+    );
+    ASSERT_GT(h.size(), 20);
+    forAll(h, i)
+    {
+        // Mostly zeros, as a flow over a sparse grid, and -0
+        const scalar v = i % 3 ? 0 : values[i % values.size()];
+        h[i] = i % 7 == 1 ? -0.0 : v;
+        U[i] = vector(v, i % 5 ? 0 : 1.0/(i + 1), -v);
+    }
+
+    // Through OpenFOAM's writers (the fields' own writeData) and fastOFstream
+    auto compare = [&](const regIOobject& field, auto&& own)
+    {
+        for (const auto fmt : {IOstream::ASCII, IOstream::BINARY})
+        {
+            for (const unsigned p : {6u, exactPrecision::digits})
+            {
+                {
+                    OFstream slow(dir/"slow", fmt);
+                    slow.precision(p);
+                    own(slow);
+                }
+                {
+                    fastOFstream fast(dir/"fast", fmt);
+                    fast.precision(p);
+                    field.writeData(fast);
+                }
+                EXPECT_EQ(contents(dir/"fast"), contents(dir/"slow"))
+                    << field.name() << " " << IOstream::formatNames[fmt]
+                    << " precision " << p;
+            }
+        }
+    };
+    compare(h, [&](Ostream& os){ h.pointScalarField::writeData(os); });
+    compare(U, [&](Ostream& os){ U.pointVectorField::writeData(os); });
+    compare(Z, [&](Ostream& os){ Z.pointScalarField::writeData(os); });
+
+    // A cloud's field
+    fastWriteIO<IOField<vector>> cloudU(io("cloudU"), label(5000));
+    forAll(cloudU, i)
+    {
+        cloudU[i] = vector(values[i], i % 4 ? 0 : -0.0, 1.0/(i + 3));
+    }
+    compare
+    (
+        cloudU, [&](Ostream& os){ cloudU.IOField<vector>::writeData(os); }
+    );
+
+    // Lists: long, short, empty, uniform, and not of doubles
+    const scalarList longList(SubList<scalar>(values, 50));
+    const scalarList shortList(SubList<scalar>(values, 7));
+    const vectorField uniform(30, vector(1, 2, 3));
+    const labelList labels(identity(40));
+    auto writeLists = [&](Ostream& os, const bool fast)
+    {
+        auto write = [&](const auto& list)
+        {
+            if (fast)
+            {
+                fastOFstream::writeList(os, list);
+            }
+            else
+            {
+                os  << list;
+            }
+            os  << nl;
+        };
+        write(longList);
+        write(shortList);
+        write(scalarList());
+        write(uniform);
+        write(labels);
+    };
+    {
+        OFstream slow(dir/"listsSlow");
+        writeLists(slow, false);
+    }
+    {
+        fastOFstream fast(dir/"listsFast");
+        writeLists(fast, true);
+    }
+    EXPECT_EQ(contents(dir/"listsFast"), contents(dir/"listsSlow"));
+}

@@ -14,6 +14,7 @@ License
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 // * * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * //
@@ -42,6 +43,50 @@ namespace
 constexpr std::size_t chunkSize = 1 << 16;
 constexpr std::size_t tapeSize = 1 << 22;
 
+// Elements of a long list formatted by one thread (writeLines)
+constexpr Foam::label linesChunk = 1 << 14;
+
+// Bytes handed to the stream buffer at once (see put)
+constexpr std::streamsize writeSize = 1 << 18;
+
+// Tape entries that stand for the next number: a double, or an integer
+// (its bits in the number's place)
+constexpr char doubleMark = 0;
+constexpr char integerMark = 1;
+
+// A positive zero, most of a field over a sparse grid, is written as its
+// text "0" with no conversion
+inline bool plainZero(const double val)
+{
+    return val == 0 && !std::signbit(val);
+}
+
+inline bool isMark(const char e)
+{
+    return e == doubleMark || e == integerMark;
+}
+
+// The text of a tape's number
+inline int entryText
+(
+    char buffer[Foam::fastOFstream::numberSize],
+    const char mark,
+    const double number,
+    const int precision
+)
+{
+    if (mark == integerMark)
+    {
+        std::int64_t val;
+        std::memcpy(&val, &number, sizeof(val));
+        return std::to_chars
+        (
+            buffer, buffer + Foam::fastOFstream::numberSize, val
+        ).ptr - buffer;
+    }
+    return Foam::fastOFstream::numberText(buffer, number, precision);
+}
+
 } // End anonymous namespace
 
 
@@ -60,13 +105,13 @@ void Foam::fastOFstream::drain()
         std::size_t k = 0;
         for (const char c : tape_)
         {
-            if (c)
+            if (!isMark(c))
             {
                 put(&c, 1);
             }
             else
             {
-                put(buffer, numberText(buffer, numbers_[k++], p));
+                put(buffer, entryText(buffer, c, numbers_[k++], p));
             }
         }
         tape_.clear();
@@ -81,7 +126,11 @@ void Foam::fastOFstream::drain()
     {
         const std::size_t end = std::min(n, (c + 1)*chunkSize);
         first[c + 1] = first[c]
-          + std::count(tape_.begin() + c*chunkSize, tape_.begin() + end, 0);
+          + std::count_if
+            (
+                tape_.begin() + c*chunkSize, tape_.begin() + end,
+                isMark
+            );
     }
 
     std::vector<std::string> text(nChunks);
@@ -95,13 +144,14 @@ void Foam::fastOFstream::drain()
         std::size_t k = first[c];
         for (std::size_t i = begin; i < end; ++i)
         {
-            if (tape_[i])
+            const char e = tape_[i];
+            if (!isMark(e))
             {
-                t += tape_[i];
+                t += e;
             }
             else
             {
-                t.append(buffer, numberText(buffer, numbers_[k++], p));
+                t.append(buffer, entryText(buffer, e, numbers_[k++], p));
             }
         }
     }
@@ -117,12 +167,21 @@ void Foam::fastOFstream::drain()
 void Foam::fastOFstream::put(const char* data, const std::streamsize n)
 {
     // The stream buffer itself: no sentry, no state check per character
-    // (OFstream's stream: this class's stdStream writes the tape first)
+    // (OFstream's stream: this class's stdStream writes the tape first).
+    // In pieces of at most writeSize: the buffer hands a longer text to one
+    // write(2), and on this platform a write(2) of 2 MB or more into a new
+    // file took 20 times as long per byte as one of 1 MB (60 MB: 350-470 ms
+    // against 15-19 ms)
     std::ostream& os = OFstream::stdStream();
-    if (os.rdbuf()->sputn(data, n) != n)
+    for (std::streamsize done = 0; done < n; done += writeSize)
     {
-        os.setstate(std::ios::badbit);
-        setState(os.rdstate());
+        const std::streamsize m = std::min(writeSize, n - done);
+        if (os.rdbuf()->sputn(data + done, m) != m)
+        {
+            os.setstate(std::ios::badbit);
+            setState(os.rdstate());
+            return;
+        }
     }
 }
 
@@ -163,8 +222,10 @@ Foam::fastOFstream::~fastOFstream()
 
 Foam::Ostream& Foam::fastOFstream::write(const char c)
 {
-    if (tape_.empty())
+    if (tape_.empty() || isMark(c))
     {
+        // (a character that is a tape's mark is written as itself)
+        drain();
         put(&c, 1);
     }
     else
@@ -189,19 +250,88 @@ Foam::Ostream& Foam::fastOFstream::write(const doubleScalar val)
     {
         return OFstream::write(val);
     }
-    if (val == 0 && !std::signbit(val))
+    if (plainZero(val))
     {
-        // The commonest value of a field over a sparse grid: its text "0"
-        // as a character, no conversion
         return write(char('0'));
     }
-    tape_.push_back(0);
+    tape_.push_back(doubleMark);
     numbers_.push_back(val);
     if (tape_.size() >= tapeSize)
     {
         drain();
     }
     return *this;
+}
+
+
+Foam::Ostream& Foam::fastOFstream::writeInteger(const std::int64_t val)
+{
+    // As a number: the cells of a cloud's positions stay on the tape
+    double bits;
+    std::memcpy(&bits, &val, sizeof(bits));
+    tape_.push_back(integerMark);
+    numbers_.push_back(bits);
+    if (tape_.size() >= tapeSize)
+    {
+        drain();
+    }
+    return *this;
+}
+
+
+void Foam::fastOFstream::writeLines
+(
+    const double* values,
+    const label n,
+    const direction nCmpt
+)
+{
+    drain();
+    const int p = precision();
+    const label nChunks = (n + linesChunk - 1)/linesChunk;
+    std::vector<std::string> text(nChunks);
+
+    #pragma omp parallel for schedule(static)
+    for (label c = 0; c < nChunks; ++c)
+    {
+        char buffer[numberSize];
+        const label end = std::min(n, (c + 1)*linesChunk);
+        std::string& t = text[c];
+        t.reserve(8*nCmpt*(end - c*linesChunk));
+        for (label i = c*linesChunk; i < end; ++i)
+        {
+            const double* v = values + i*nCmpt;
+            if (nCmpt > 1)
+            {
+                t += token::BEGIN_LIST;
+            }
+            for (direction d = 0; d < nCmpt; ++d)
+            {
+                if (d)
+                {
+                    t += token::SPACE;
+                }
+                if (plainZero(v[d]))
+                {
+                    t += '0';
+                }
+                else
+                {
+                    t.append(buffer, numberText(buffer, v[d], p));
+                }
+            }
+            if (nCmpt > 1)
+            {
+                t += token::END_LIST;
+            }
+            t += token::NL;
+        }
+    }
+    for (const std::string& t : text)
+    {
+        put(t.data(), t.size());
+    }
+    lineNumber_ += n;
 }
 
 
@@ -253,15 +383,23 @@ Foam::Ostream& Foam::fastOFstream::writeQuoted
 
 Foam::Ostream& Foam::fastOFstream::write(const int32_t val)
 {
-    drain();
-    return OFstream::write(val);
+    if (format() == BINARY)
+    {
+        drain();
+        return OFstream::write(val);
+    }
+    return writeInteger(val);
 }
 
 
 Foam::Ostream& Foam::fastOFstream::write(const int64_t val)
 {
-    drain();
-    return OFstream::write(val);
+    if (format() == BINARY)
+    {
+        drain();
+        return OFstream::write(val);
+    }
+    return writeInteger(val);
 }
 
 
@@ -282,8 +420,10 @@ Foam::Ostream& Foam::fastOFstream::writeRaw
     std::streamsize count
 )
 {
+    // A binary list's block (write(data, count) comes here): in pieces
     drain();
-    return OFstream::writeRaw(data, count);
+    put(data, count);
+    return *this;
 }
 
 

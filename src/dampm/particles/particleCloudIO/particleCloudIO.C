@@ -22,6 +22,7 @@ License
 #include "symmTensor.H"
 #include "tensor.H"
 #include "tensor2D.H"
+#include <cstring>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -64,11 +65,17 @@ Foam::IOobject Foam::particleCloudIO::fileIO
 
 bool Foam::particleCloudIO::writeCloudProperties() const
 {
-    localIOdictionary props
+    // A dictionary (localIOdictionary reads it) written straight through a
+    // fastOFstream: a dictionary's entry is formatted and parsed back when
+    // it is added, slow for the bins' lists
+    const IOobject io
     (
         fileIO("cloudProperties", "uniform"/cloud::prefix/this->name())
     );
-    props.add("geometry", word("positions"));
+    mkDir(io.path());
+    fastOFstream os(io.objectPath(), IOstream::ASCII);
+    io.writeHeader(os, localIOdictionary::typeName);
+    os.writeEntry("geometry", word("positions"));
 
     // The particles' bins, run-length coded (bins are in storage order): a
     // restart continues with them, bit for bit (particleArrays::sortByCell
@@ -86,16 +93,12 @@ bool Foam::particleCloudIO::writeCloudProperties() const
             }
             ++counts.last();
         }
-        props.add("binCells", cells);
-        props.add("binCounts", counts);
+        os.writeEntry("binCells", cells);
+        os.writeEntry("binCounts", counts);
     }
-    return props.regIOobject::writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
+    IOobject::writeEndDivider(os);
+    os.flush();
+    return os.good();
 }
 
 
@@ -115,30 +118,41 @@ bool Foam::particleCloudIO::writePositions
     const double* y = particles_.component(particleArrays::Y);
     const double* z = particles_.component(particleArrays::Z);
 
-    // As OpenFOAM's particle::writePosition: binary is the position and
-    // the cell of its 1706 layout
-    particle::positionsCompat1706 record;
-    const std::size_t recordSize =
-        offsetof(particle::positionsCompat1706, facei)
-      - offsetof(particle::positionsCompat1706, position);
-
     os  << particles_.size() << nl << token::BEGIN_LIST << nl;
-    for (label i = 0; i < particles_.size(); ++i)
+    if (fmt == IOstream::ASCII)
     {
-        record.position = point(x[i], y[i], z[i]);
-        record.celli = meshCell[g.cellOf(x[i], y[i], z[i])];
-        if (fmt == IOstream::ASCII)
+        for (label i = 0; i < particles_.size(); ++i)
         {
-            os  << record.position << token::SPACE << record.celli;
+            os  << point(x[i], y[i], z[i]) << token::SPACE
+                << meshCell[g.cellOf(x[i], y[i], z[i])] << nl;
         }
-        else
+    }
+    else
+    {
+        // As OpenFOAM's particle::writePosition and Cloud: per particle
+        // '(', the position and cell of the 1706 layout, ')' and a newline;
+        // made in memory and written as one block
+        particle::positionsCompat1706 record;
+        const std::size_t recordSize =
+            offsetof(particle::positionsCompat1706, facei)
+          - offsetof(particle::positionsCompat1706, position);
+        const std::size_t lineSize = recordSize + 3;
+        std::vector<char> lines(lineSize*particles_.size());
+        for (label i = 0; i < particles_.size(); ++i)
         {
-            os.write
+            record.position = point(x[i], y[i], z[i]);
+            record.celli = meshCell[g.cellOf(x[i], y[i], z[i])];
+            char* line = lines.data() + i*lineSize;
+            line[0] = token::BEGIN_LIST;
+            std::memcpy
             (
-                reinterpret_cast<const char*>(&record.position), recordSize
+                line + 1, reinterpret_cast<const char*>(&record.position),
+                recordSize
             );
+            line[recordSize + 1] = token::END_LIST;
+            line[recordSize + 2] = token::NL;
         }
-        os  << nl;
+        os.writeRaw(lines.data(), lines.size());
     }
     os  << token::END_LIST << nl;
     IOobject::writeEndDivider(os);
@@ -154,7 +168,7 @@ bool Foam::particleCloudIO::writeTypedField
     IOstream::streamFormat fmt
 ) const
 {
-    IOField<Type> fld
+    fastWriteIO<IOField<Type>> fld
     (
         fileIO(f.name, cloud::prefix/this->name()),
         particles_.size()
@@ -244,11 +258,35 @@ Foam::particleCloudIO::particleCloudIO
         )
     ),
     particles_(particles),
-    grid_(grid)
+    grid_(grid),
+    format_(cloudFormat(grid.mesh().time()))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::IOstream::streamFormat Foam::particleCloudIO::cloudFormat
+(
+    const Time& runTime
+)
+{
+    const dictionary& dict = runTime.controlDict();
+    const word key("cloudFormat");
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return IOstream::BINARY;
+    }
+    const word name(e->get<word>());
+    if (!IOstream::formatNames.found(name))
+    {
+        FatalIOErrorInFunction(e->stream())
+            << key << " " << name << " is invalid; allowed: ascii or"
+            << " binary (the default)" << exit(FatalIOError);
+    }
+    return IOstream::formatNames[name];
+}
+
 
 Foam::fileName Foam::particleCloudIO::cloudDir
 (
@@ -576,7 +614,7 @@ void Foam::particleCloudIO::readBins
 
 bool Foam::particleCloudIO::writeObject
 (
-    IOstream::streamFormat fmt,
+    IOstream::streamFormat,
     IOstream::versionNumber,
     IOstream::compressionType,
     const bool
@@ -584,12 +622,12 @@ bool Foam::particleCloudIO::writeObject
 {
     // Restart state: the same doubles when read back, in ASCII too
     const exactPrecision exact;
-    bool ok = writeCloudProperties() && writePositions(fmt);
+    bool ok = writeCloudProperties() && writePositions(format_);
     for (const particleArrays::fieldInfo& f : particles_.fields())
     {
         if (f.name != "positions")
         {
-            ok = writeField(f, fmt) && ok;
+            ok = writeField(f, format_) && ok;
         }
     }
     return ok;
