@@ -42,6 +42,7 @@ Description
 #include "localIOdictionary.H"
 #include "depthAveragedFlow.H"
 #include "particleCloudIO.H"
+#include "staticFieldIO.H"
 #include "hazardMaps.H"
 #include "handOff.H"
 #include "stepTimers.H"

@@ -36,11 +36,7 @@ constexpr double ascTol = 1e-12;
 
 TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
 {
-    const fileName dir = scratchDir("hazardMapsCase");
-    rmDir(dir);
-    mkDir(dir/"constant");
-    cp(testCase::meshDir("box2D")/"system", dir);
-    cp(testCase::meshDir("box2D")/"constant"/"polyMesh", dir/"constant");
+    const fileName dir = testCase::scratchCopy("hazardMapsCase");
     testCase tc(dir);
     tc.runTime().setTime(2.5, 1);
     const mpmGrid grid(tc.mesh());

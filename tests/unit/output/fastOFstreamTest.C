@@ -215,11 +215,7 @@ TEST(fastOFstream, OpenFOAMReadsExactPrecisionBackExactly)
 
 TEST(fastOFstream, FieldsAndListsFormattedFromMemoryAreOpenFOAMs)
 {
-    const fileName dir = scratchDir("fastOFstreamCase");
-    rmDir(dir);
-    mkDir(dir/"constant");
-    cp(testCase::meshDir("box2D")/"system", dir);
-    cp(testCase::meshDir("box2D")/"constant"/"polyMesh", dir/"constant");
+    const fileName dir = testCase::scratchCopy("fastOFstreamCase");
     testCase tc(dir);
     const pointMesh& pMesh = pointMesh::New(tc.mesh());
     const scalarList values(testValues());

@@ -34,12 +34,7 @@ constexpr double vtkTol = 1e-5;
 // A copy of the box2D test mesh in a fresh case folder
 fileName freshCase(const word& name)
 {
-    const fileName dir = scratchDir(name);
-    rmDir(dir);
-    mkDir(dir);
-    cp(testCase::meshDir("box2D")/"system", dir);
-    cp(testCase::meshDir("box2D")/"constant", dir);
-    return dir;
+    return testCase::scratchCopy(name);
 }
 
 particleArrays makeCloud(const label n)

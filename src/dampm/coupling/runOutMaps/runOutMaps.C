@@ -13,6 +13,7 @@ License
 #include "exactPrecision.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
+#include <algorithm>
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -39,10 +40,7 @@ Foam::runOutMaps::runOutMaps
     const gridGeometry& g = grid_->geometry();
     nodes_.resize(g.nNodes());
     topography_->sampleNodes(g, nodes_.Z.data());
-    for (std::vector<double>* a : {&mass_, &px_, &py_, &volume_})
-    {
-        a->assign(g.nNodes(), 0.0);
-    }
+    sums_.assign(nSums*g.nNodes(), 0.0);
 
     // The run-out's maps of the hand-off time (point fields there)
     maps_.reset(new hazardMaps(*grid_, *topography_, nodes_.Z.data()));
@@ -65,8 +63,7 @@ void Foam::runOutMaps::sumProcessors(int32_t lo[2], int32_t hi[2])
         return;
     }
     const gridGeometry& g = grid_->geometry();
-    std::vector<double>* const sums[4] = {&mass_, &px_, &py_, &volume_};
-    List<scalar> box(4*(hi[0] - lo[0])*(hi[1] - lo[1]));
+    List<scalar> box(nSums*(hi[0] - lo[0])*(hi[1] - lo[1]));
     const auto forEachNode = [&](const auto& fn)
     {
         label k = 0;
@@ -74,10 +71,10 @@ void Foam::runOutMaps::sumProcessors(int32_t lo[2], int32_t hi[2])
         {
             for (int32_t i = lo[0]; i < hi[0]; ++i)
             {
-                const label node = g.nodeIndex(i, j, 0);
-                for (std::vector<double>* s : sums)
+                double* s = sums_.data() + nSums*g.nodeIndex(i, j, 0);
+                for (int c = 0; c < nSums; ++c)
                 {
-                    fn((*s)[node], box[k++]);
+                    fn(s[c], box[k++]);
                 }
             }
         }
@@ -163,7 +160,7 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     {
         for (label i = first; i < last; ++i)
         {
-            mass_[i] = px_[i] = py_[i] = volume_[i] = 0;
+            std::fill_n(sums_.data() + nSums*i, nSums, 0.0);
             nodes_.h[i] = nodes_.vx[i] = nodes_.vy[i] = 0;
         }
     });
@@ -224,11 +221,13 @@ void Foam::runOutMaps::update(const particleArrays& particles)
                 {
                     continue;
                 }
-                const label node = g.nodeIndex(i + (c & 1), row, 0);
-                mass_[node] += w[c]*m[p];
-                px_[node] += w[c]*m[p]*ux[p];
-                py_[node] += w[c]*m[p]*uy[p];
-                volume_[node] += w[c]*V[p];
+                double* s =
+                    sums_.data() + nSums*g.nodeIndex(i + (c & 1), row, 0);
+                const double wm = w[c]*m[p];
+                s[0] += wm;
+                s[1] += wm*ux[p];
+                s[2] += wm*uy[p];
+                s[3] += w[c]*V[p];
             }
             bandLo[0] = std::min(bandLo[0], i);
             bandLo[1] = std::min(bandLo[1], j);
@@ -266,7 +265,8 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     {
         for (label k = first; k < last; ++k)
         {
-            if (!(mass_[k] > 0))
+            const double* s = sums_.data() + nSums*k;
+            if (!(s[0] > 0))
             {
                 continue;
             }
@@ -280,9 +280,9 @@ void Foam::runOutMaps::update(const particleArrays& particles)
                     area *= 0.5;
                 }
             }
-            nodes_.h[k] = volume_[k]/area;
-            nodes_.vx[k] = px_[k]/mass_[k];
-            nodes_.vy[k] = py_[k]/mass_[k];
+            nodes_.h[k] = s[3]/area;
+            nodes_.vx[k] = s[1]/s[0];
+            nodes_.vy[k] = s[2]/s[0];
         }
     });
     maps_->update(nodes_, active_);
