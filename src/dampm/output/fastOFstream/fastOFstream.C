@@ -254,13 +254,7 @@ Foam::Ostream& Foam::fastOFstream::write(const doubleScalar val)
     {
         return write(char('0'));
     }
-    tape_.push_back(doubleMark);
-    numbers_.push_back(val);
-    if (tape_.size() >= tapeSize)
-    {
-        drain();
-    }
-    return *this;
+    return pushNumber(doubleMark, val);
 }
 
 
@@ -269,8 +263,18 @@ Foam::Ostream& Foam::fastOFstream::writeInteger(const std::int64_t val)
     // As a number: the cells of a cloud's positions stay on the tape
     double bits;
     std::memcpy(&bits, &val, sizeof(bits));
-    tape_.push_back(integerMark);
-    numbers_.push_back(bits);
+    return pushNumber(integerMark, bits);
+}
+
+
+Foam::Ostream& Foam::fastOFstream::pushNumber
+(
+    const char mark,
+    const double number
+)
+{
+    tape_.push_back(mark);
+    numbers_.push_back(number);
     if (tape_.size() >= tapeSize)
     {
         drain();
