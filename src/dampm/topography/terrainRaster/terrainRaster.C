@@ -14,8 +14,7 @@ License
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "exactPrecision.H"
-#include <gdal.h>
-#include <cpl_error.h>
+#include "geoTiffCodec.H"
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -161,36 +160,6 @@ bool isCount(const double v)
     return v >= 1 && v < 1e9 && v == std::floor(v);
 }
 
-
-//- A GDAL dataset closed when it goes out of scope
-struct gdalDataset
-{
-    GDALDatasetH h;
-
-    explicit gdalDataset(GDALDatasetH handle)
-    :
-        h(handle)
-    {}
-
-    gdalDataset(const gdalDataset&) = delete;
-    void operator=(const gdalDataset&) = delete;
-
-    ~gdalDataset()
-    {
-        if (h)
-        {
-            GDALClose(h);
-        }
-    }
-};
-
-
-//- Register the GDAL drivers once
-void registerGdal()
-{
-    static const bool registered = (GDALAllRegister(), true);
-    (void)registered;
-}
 
 } // End anonymous namespace
 
@@ -452,21 +421,11 @@ void Foam::terrainRaster::readAsc()
 
 void Foam::terrainRaster::readGeoTiff()
 {
-    registerGdal();
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLErrorReset();
-    gdalDataset ds(GDALOpen(file_.c_str(), GA_ReadOnly));
-    CPLPopErrorHandler();
-    if (!ds.h)
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
-            << "GDAL cannot open the GeoTIFF " << file_ << ": "
-            << CPLGetLastErrorMsg()
-            << exit(FatalIOError);
-    }
+    geoTiffCodec::image img;
+    geoTiffCodec::New()->read(file_, img);
 
-    double gt[6];
-    if (GDALGetGeoTransform(ds.h, gt) != CE_None)
+    const double* gt = img.transform;
+    if (!img.hasTransform)
     {
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
             << "the GeoTIFF " << file_ << " has no geotransform; expected a"
@@ -483,48 +442,35 @@ void Foam::terrainRaster::readGeoTiff()
             << " rotation terms"
             << exit(FatalIOError);
     }
-    if (GDALGetRasterCount(ds.h) < 1)
+    if (img.nBands < 1)
     {
         FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
             << "the GeoTIFF " << file_ << " has no raster band"
             << exit(FatalIOError);
     }
 
-    nx_ = GDALGetRasterXSize(ds.h);
-    ny_ = GDALGetRasterYSize(ds.h);
+    nx_ = img.nx;
+    ny_ = img.ny;
     dx_ = gt[1];
     dy_ = std::abs(gt[5]);
-    const char* wkt = GDALGetProjectionRef(ds.h);
-    projection_ = (wkt ? wkt : "");
+    projection_ = img.projection;
 
     // The geotransform locates the outer corner of pixel (0, 0); rows are
     // north to south when the pixel height is negative
     const bool northUp = gt[5] < 0;
     mapOrigin_.x() = gt[0] + dx_/2;
     mapOrigin_.y() = (northUp ? gt[3] + ny_*gt[5] : gt[3]) + dy_/2;
-
-    GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
-    int hasNoData = 0;
-    const double noData = GDALGetRasterNoDataValue(band, &hasNoData);
+    const bool hasNoData = img.hasNoData;
+    const double noData = img.noData;
 
     values_.setSize(label(nx_)*ny_);
     for (label r = 0; r < ny_; ++r)
     {
         const label j = northUp ? ny_ - 1 - r : r;
-        if
+        std::copy_n
         (
-            GDALRasterIO
-            (
-                band, GF_Read, 0, r, nx_, 1, values_.data() + nx_*j,
-                nx_, 1, GDT_Float64, 0, 0
-            ) != CE_None
-        )
-        {
-            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file_)
-                << "GDAL cannot read row " << r + 1 << " of band 1 of the"
-                << " GeoTIFF " << file_ << ": " << CPLGetLastErrorMsg()
-                << exit(FatalIOError);
-        }
+            img.values.data() + size_t(nx_)*r, nx_, values_.data() + nx_*j
+        );
     }
 
     // NaN is NODATA whether or not declared (GIS exports mark missing data
@@ -924,68 +870,32 @@ void Foam::terrainRaster::writeGeoTiff
 ) const
 {
     fpTrapsHeld masked;
-    registerGdal();
     mkDir(file.path());
-    GDALDriverH driver = GDALGetDriverByName("GTiff");
-    CPLErrorReset();
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    bool created = false;
-    {
-        gdalDataset ds
-        (
-            driver
-          ? GDALCreate
-            (
-                driver, file.c_str(), nx_, ny_, 1,
-                type == sampleType::float64 ? GDT_Float64 : GDT_Float32,
-                nullptr
-            )
-          : nullptr
-        );
-        created = (ds.h != nullptr);
-        if (created)
-        {
-            // The outer corner of the north-west pixel, rows north to south
-            const vector2D ll(mapLowerLeft());
-            double gt[6] = {ll.x(), dx_, 0, ll.y() + ny_*dy_, 0, -dy_};
-            GDALSetGeoTransform(ds.h, gt);
-            if (hasProjection())
-            {
-                GDALSetProjection(ds.h, projection_.c_str());
-            }
-            GDALRasterBandH band = GDALGetRasterBand(ds.h, 1);
-            GDALSetRasterNoDataValue(band, writtenNoData);
 
-            std::vector<double> row(nx_);
-            for (label r = 0; r < ny_; ++r)
-            {
-                const scalar* v = values_.cdata() + nx_*(ny_ - 1 - r);
-                for (label i = 0; i < nx_; ++i)
-                {
-                    row[i] = std::isfinite(v[i]) ? v[i] : writtenNoData;
-                }
-                if
-                (
-                    GDALRasterIO
-                    (
-                        band, GF_Write, 0, r, nx_, 1, row.data(), nx_, 1,
-                        GDT_Float64, 0, 0
-                    ) != CE_None
-                )
-                {
-                    break;
-                }
-            }
+    // The outer corner of the north-west pixel, rows north to south
+    geoTiffCodec::image img;
+    img.nx = nx_;
+    img.ny = ny_;
+    const vector2D ll(mapLowerLeft());
+    const double gt[6] = {ll.x(), dx_, 0, ll.y() + ny_*dy_, 0, -dy_};
+    std::copy(gt, gt + 6, img.transform);
+    img.hasTransform = true;
+    img.nBands = 1;
+    img.projection = projection_;
+    img.values.resize(size_t(nx_)*ny_);
+    for (label r = 0; r < ny_; ++r)
+    {
+        const scalar* v = values_.cdata() + nx_*(ny_ - 1 - r);
+        double* row = img.values.data() + size_t(nx_)*r;
+        for (label i = 0; i < nx_; ++i)
+        {
+            row[i] = std::isfinite(v[i]) ? v[i] : writtenNoData;
         }
     }
-    CPLPopErrorHandler();
-    if (!created || CPLGetLastErrorType() >= CE_Failure)
-    {
-        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file)
-            << "GDAL cannot write the GeoTIFF " << file << ": "
-            << CPLGetLastErrorMsg()
-            << exit(FatalIOError);
-    }
+    geoTiffCodec::New()->write
+    (
+        file, img, type == sampleType::float64, writtenNoData
+    );
 }
 
 
