@@ -357,6 +357,39 @@ void Foam::depthAveragedFlow::detectFlatBed()
 }
 
 
+void Foam::depthAveragedFlow::markTransientFields()
+{
+    // Written by S5 and S7 (or, z and its velocity, for the output) after
+    // every sort before anything reads them, or one value for every column
+    // (a flat bed's): the sort need not move them
+    particles_.markTransient(fields_.h());
+    particles_.markTransient(fields_.A());
+    particles_.markTransient(fields_.gradZeta(), 2);
+    particles_.markTransient(fields_.gradZ(), 2);
+    particles_.markTransient(fields_.kappa());
+    particles_.markTransient(fields_.Zb());
+    particles_.markTransient(fields_.basal(), 3);
+    particles_.markTransient(particleArrays::Z);
+    particles_.markTransient(particleArrays::UZ);
+
+    // Without a stress model the stress is zero throughout (also when a
+    // restart's cloud holds another model's)
+    if (!rheology_->active())
+    {
+        const label nSigma =
+            particleArrays::nComponents(particleArrays::fieldKind::symmTensor);
+        for (label c = 0; c < nSigma; ++c)
+        {
+            zeroArray
+            (
+                particles_.component(fields_.sigma() + c), particles_.size()
+            );
+        }
+        particles_.markTransient(fields_.sigma(), nSigma);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::depthAveragedFlow::depthAveragedFlow
@@ -419,6 +452,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     startColumns(dict, caseDir);
     setStartDefaults();
     detectFlatBed();
+    markTransientFields();
     flagged_.reserve(particles_.size());
     splitting_.reserve(particles_.size());
 }
@@ -744,72 +778,30 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
 
     // Positions, footprints, walls and open sides
     const label n = particles_.size();
-    const label Fc = fields_.F();
-    const label Cc = fields_.gradU();
-    double* F[4] =
-    {
-        particles_.component(Fc), particles_.component(Fc + 1),
-        particles_.component(Fc + 2), particles_.component(Fc + 3)
-    };
-    double* C[4] =
-    {
-        particles_.component(Cc), particles_.component(Cc + 1),
-        particles_.component(Cc + 2), particles_.component(Cc + 3)
-    };
-    double* x = particles_.component(particleArrays::X);
-    double* y = particles_.component(particleArrays::Y);
-    double* ux = particles_.component(particleArrays::UX);
-    double* uy = particles_.component(particleArrays::UY);
-    const double* m = particles_.component(particleArrays::M);
-    const double* V = particles_.component(particleArrays::VOL);
     flagged_.resize(n);
-    std::vector<char>& splitFlags = splitting_.flags(n);
-    const domainSides sides = sides_;
-    const bool split = splitting_.active();
-    const splitRule rule = splitting_.rule();
-    label nRemoved = 0;
-
-    // The columns to split are marked here, while their footprints are at
-    // hand, and again after a removal (which moves them)
-    #pragma omp parallel for schedule(static) reduction(+:nRemoved)
-    for (label i = 0; i < n; ++i)
+    columnMotion motion;
+    motion.n = n;
+    motion.x = particles_.component(particleArrays::X);
+    motion.y = particles_.component(particleArrays::Y);
+    motion.ux = particles_.component(particleArrays::UX);
+    motion.uy = particles_.component(particleArrays::UY);
+    for (int k = 0; k < 4; ++k)
     {
-        double* pos[2] = {&x[i], &y[i]};
-        double* vel[2] = {&ux[i], &uy[i]};
-        *pos[0] += dt*ux[i];
-        *pos[1] += dt*uy[i];
-        advanceColumn
-        (
-            dt, C[0][i], C[1][i], C[2][i], C[3][i],
-            F[0][i], F[1][i], F[2][i], F[3][i]
-        );
-        flagged_[i] = 0;
-        for (int d = 0; d < 2 && !flagged_[i]; ++d)
-        {
-            const double eps = 1e-6*g.dx[d];
-            const double lo = g.origin[d];
-            const double hi = g.domainUpper(d);
-            if (*pos[d] < lo || *pos[d] > hi)
-            {
-                const int s = *pos[d] > hi;
-                if (sides.wall[d][s])
-                {
-                    *pos[d] = s ? hi - eps : lo + eps;
-                    *vel[d] = 0;
-                }
-                else
-                {
-                    flagged_[i] = 1;
-                    ++nRemoved;
-                }
-            }
-        }
-        if (split)
-        {
-            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
-            splitFlags[i] = rule(Fi, V[i], x[i], y[i]);
-        }
+        motion.C[k] = particles_.component(fields_.gradU() + k);
+        motion.F[k] = particles_.component(fields_.F() + k);
     }
+    motion.V = particles_.component(particleArrays::VOL);
+    motion.removal = flagged_.data();
+    motion.splitCandidate = splitting_.flags(n).data();
+
+    // The columns to split are marked here, and again after a removal
+    // (which moves them); the split checks that the marked fit the domain
+    const label nRemoved = advanceColumns
+    (
+        g, sides_, dt, splitting_.active(), splitting_.rule(), motion
+    );
+    const double* m = particles_.component(particleArrays::M);
+
     // The outflow tallied in storage order: the same on any number of threads
     double removed = 0;
     if (nRemoved)

@@ -105,10 +105,9 @@ Foam::label Foam::depthAveragedSplitting::split
     const label n = particles.size();
     const label Fc0 = fields.F();
     const label Cc0 = fields.gradU();
+    const splitRule r = rule();
 
-    if (!marked)
     {
-        const splitRule r = rule();
         const double* F[4] =
         {
             particles.component(Fc0), particles.component(Fc0 + 1),
@@ -117,21 +116,28 @@ Foam::label Foam::depthAveragedSplitting::split
         const double* x = particles.component(particleArrays::X);
         const double* y = particles.component(particleArrays::Y);
         const double* V = particles.component(particleArrays::VOL);
-        flags_.resize(n);
+        if (!marked)
+        {
+            flags_.resize(n);
 
-        #pragma omp parallel for schedule(static)
+            #pragma omp parallel for simd schedule(static)
+            for (label i = 0; i < n; ++i)
+            {
+                flags_[i] =
+                    r.candidate(F[0][i], F[1][i], F[2][i], F[3][i], V[i]);
+            }
+        }
+        list_.clear();
         for (label i = 0; i < n; ++i)
         {
-            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
-            flags_[i] = r(Fi, V[i], x[i], y[i]);
-        }
-    }
-    list_.clear();
-    for (label i = 0; i < n; ++i)
-    {
-        if (flags_[i])
-        {
-            list_.push_back(i);
+            if (flags_[i])
+            {
+                const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+                if (r.fits(Fi, x[i], y[i]))
+                {
+                    list_.push_back(i);
+                }
+            }
         }
     }
     const label nSplit = label(list_.size());

@@ -68,8 +68,18 @@ Foam::label Foam::particleArrays::addField
     {
         components_.emplace_back(size_, initialValue);
         components_.back().reserve(cell_.capacity());
+        transient_.push_back(false);
     }
     return first;
+}
+
+
+void Foam::particleArrays::markTransient(const label first, const label n)
+{
+    for (label c = first; c < first + n; ++c)
+    {
+        transient_.at(c) = true;
+    }
 }
 
 
@@ -205,8 +215,13 @@ void Foam::particleArrays::clear()
 void Foam::particleArrays::permute()
 {
     scratch_.resize(size_);
-    for (componentArray& array : components_)
+    for (size_t c = 0; c < components_.size(); ++c)
     {
+        if (transient_[c])
+        {
+            continue;
+        }
+        componentArray& array = components_[c];
         double* s = scratch_.data();
         const double* src = array.data();
         const label* ord = order_.data();
