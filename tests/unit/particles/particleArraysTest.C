@@ -213,6 +213,28 @@ TEST(particleArrays, SortInTileOrderStoresEveryTileContiguously)
 }
 
 
+TEST(particleArrays, TileRanksByShiftsAreTheRanksByDivisions)
+{
+    // Tile sizes that are powers of two take shifts and masks
+    const gridGeometry g = grid2D();
+    for (const label T : {1, 2, 4, 8, 3, 5})
+    {
+        const tileCellOrder o(g, T);
+        const label nTx = (g.nCells[0] + T - 1)/T;
+        for (label j = 0; j < g.nCells[1]; ++j)
+        {
+            for (label i = 0; i < g.nCells[0]; ++i)
+            {
+                const label expected =
+                    (i/T + nTx*(j/T))*T*T + i % T + T*(j % T);
+                EXPECT_EQ(o.rank(i, j, 0), expected) << T;
+                EXPECT_EQ(o.rank(g.cellIndex(i, j, 0)), expected) << T;
+            }
+        }
+    }
+}
+
+
 TEST(particleArrays, SortByCellGroupsCellsAndKeepsParticlesWhole)
 {
     const gridGeometry g = grid2D();

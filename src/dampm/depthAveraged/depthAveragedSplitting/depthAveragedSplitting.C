@@ -107,6 +107,8 @@ Foam::label Foam::depthAveragedSplitting::split
     const label Cc0 = fields.gradU();
     const splitRule r = rule();
 
+    // The candidates (marked again here after a removal moved the columns),
+    // and of them those whose halves fit the domain, in storage order
     {
         const double* F[4] =
         {

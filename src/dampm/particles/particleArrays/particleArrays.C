@@ -76,9 +76,16 @@ Foam::label Foam::particleArrays::addField
 
 void Foam::particleArrays::markTransient(const label first, const label n)
 {
+    if (first < 0 || n < 0 || first + n > nComponentArrays())
+    {
+        FatalErrorInFunction
+            << "components " << first << " to " << first + n - 1
+            << " are not all among the " << nComponentArrays()
+            << " component arrays" << abort(FatalError);
+    }
     for (label c = first; c < first + n; ++c)
     {
-        transient_.at(c) = true;
+        transient_[c] = true;
     }
 }
 

@@ -1,0 +1,134 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    S9 for every column (advanceColumns, the vectorised pass): positions
+    moved, a column through a wall put back inside with no velocity across
+    it, one through an open side marked and counted, the footprint carried
+    by I + dt C, the affine field pushed forward only where that does not
+    grow it (and not at all when J <= 0), and the split candidates marked
+    only with splitting on. Exact values: each is one short expression.
+
+\*---------------------------------------------------------------------------*/
+
+#include "uniformGrid.H"
+#include "depthAveragedKernels.H"
+#include <gtest/gtest.h>
+#include <vector>
+
+using namespace Foam;
+
+namespace
+{
+
+struct columns
+{
+    std::vector<double> x, y, ux, uy, V;
+    std::vector<double> C[4], F[4];
+    std::vector<char> removal, split;
+
+    explicit columns(const int n)
+    :
+        x(n), y(n), ux(n), uy(n), V(n, 1.0), removal(n, 7), split(n, 7)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            C[k].assign(n, 0.0);
+            F[k].assign(n, k == 0 || k == 3 ? 0.5 : 0.0);
+        }
+    }
+
+    columnMotion motion()
+    {
+        columnMotion m;
+        m.n = int(x.size());
+        m.x = x.data();
+        m.y = y.data();
+        m.ux = ux.data();
+        m.uy = uy.data();
+        for (int k = 0; k < 4; ++k)
+        {
+            m.C[k] = C[k].data();
+            m.F[k] = F[k].data();
+        }
+        m.V = V.data();
+        m.removal = removal.data();
+        m.splitCandidate = split.data();
+        return m;
+    }
+};
+
+} // End anonymous namespace
+
+
+TEST(advanceColumns, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
+{
+    // x in [0, 10] (a wall below, open above), y in [0, 4] (walls)
+    const gridGeometry g = uniformGrid(2, {0, 0, 0}, {1, 1, 1}, {10, 4, 1});
+    domainSides sides;
+    sides.wall[0][0] = true;
+    sides.wall[1][0] = sides.wall[1][1] = true;
+    splitRule rule;
+    rule.maxArea = 1;
+    rule.hSplit = 0.1;
+    const double dt = 0.5;
+
+    columns c(6);
+    // 0: inside, no gradient
+    c.x[0] = 5; c.y[0] = 2; c.ux[0] = 1; c.uy[0] = 0.5;
+    // 1: through the wall at x = 0
+    c.x[1] = 0.2; c.y[1] = 1; c.ux[1] = -1; c.uy[1] = 0.25;
+    // 2: through the open side x = 10
+    c.x[2] = 9.8; c.y[2] = 1; c.ux[2] = 1;
+    // 3: stretching (push-forward kept), footprint of area 4 (to split)
+    c.x[3] = 4; c.y[3] = 2; c.C[0][3] = 0.2;
+    c.F[0][3] = 2; c.F[3][3] = 2;
+    // 4: compressing (the push-forward would grow C: not kept)
+    c.x[4] = 6; c.y[4] = 2; c.C[0][4] = -0.2;
+    // 5: folding over (J < 0: C kept), through the wall at y = 4
+    c.x[5] = 7; c.y[5] = 3.9; c.uy[5] = 1; c.C[0][5] = -3;
+
+    const gridGeometry::index nRemoved =
+        advanceColumns(g, sides, dt, true, rule, c.motion());
+
+    EXPECT_EQ(nRemoved, 1);
+    EXPECT_EQ(c.removal, std::vector<char>({0, 0, 1, 0, 0, 0}));
+    EXPECT_EQ(c.split, std::vector<char>({0, 0, 0, 1, 0, 0}));
+
+    EXPECT_EQ(c.x[0], 5 + dt*1);
+    EXPECT_EQ(c.y[0], 2 + dt*0.5);
+    EXPECT_EQ(c.ux[0], 1);
+    EXPECT_EQ(c.uy[0], 0.5);
+
+    EXPECT_EQ(c.x[1], 1e-6*1.0);
+    EXPECT_EQ(c.ux[1], 0);
+    EXPECT_EQ(c.y[1], 1 + dt*0.25);
+    EXPECT_EQ(c.uy[1], 0.25);
+
+    EXPECT_EQ(c.y[5], 4 - 1e-6*1.0);
+    EXPECT_EQ(c.uy[5], 0);
+
+    // F <- (I + dt C) F; C <- C (I + dt C)^-1 where |C G^-1| <= |C|
+    const double g3 = 1 + dt*0.2;
+    EXPECT_EQ(c.F[0][3], g3*2);
+    EXPECT_EQ(c.F[3][3], 2);
+    EXPECT_EQ(c.C[0][3], (0.2*1 - 0*0)/(g3*1 - 0*0));
+    EXPECT_EQ(c.C[0][4], -0.2);
+    EXPECT_EQ(c.F[0][4], (1 - dt*0.2)*0.5);
+    EXPECT_EQ(c.C[0][5], -3);
+    EXPECT_EQ(c.F[0][5], (1 - dt*3)*0.5);
+
+    // Without splitting no column is marked
+    columns d(6);
+    d.F[0][3] = d.F[3][3] = 2;
+    advanceColumns(g, sides, dt, false, rule, d.motion());
+    EXPECT_EQ(d.split, std::vector<char>(6, 0));
+}
+
+
+// ************************************************************************* //
