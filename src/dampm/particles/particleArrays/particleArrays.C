@@ -482,15 +482,13 @@ bool Foam::particleArrays::sortByCell
     rank_.resize(size_);
     // The rank from the cell's indices per axis, not from its flat index
     // (two integer divisions fewer per particle)
-    const bool is3D = g.dim == 3;
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < size_; ++i)
     {
-        const label ci = g.cellDir(0, x[i]);
-        const label cj = g.cellDir(1, y[i]);
-        const label ck = is3D ? g.cellDir(2, z[i]) : 0;
-        cellp[i] = g.cellIndex(ci, cj, ck);
-        rank_[i] = order.rank(ci, cj, ck);
+        gridGeometry::index ijk[3];
+        g.cellIJK(x[i], y[i], z[i], ijk);
+        cellp[i] = g.cellIndex(ijk[0], ijk[1], ijk[2]);
+        rank_[i] = order.rank(ijk[0], ijk[1], ijk[2]);
     }
     const bool sorted = countRanks();
     binned_ = true;
