@@ -1,0 +1,386 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    dampmFoam's kernels sum a node's or a column's values as vectors of
+    lanes (vectorLanes.H); each lane must do the scalar code's operations in
+    its order, so that results stay the same to the bit. Against scalar
+    references on random columns (positions, masses, velocities, gradients,
+    stresses, basal coefficients) and random node fields, for the three
+    shape functions, compared bit for bit:
+    - the momentum scatter (S3) against particlesToGridMomentum;
+    - the force scatter (S7) against its scalar form, in the same scatter
+      order, for the gradient and divergence forms, with and without
+      stress and basal coefficients;
+    - the surface gather (S5) against its scalar form, with and without
+      terrain;
+    - the velocity gather of G2P against the generic (any Dim) sum.
+
+\*---------------------------------------------------------------------------*/
+
+#include "uniformGrid.H"
+#include "depthAveragedKernels.H"
+#include "particleTransfers.H"
+#include "shapeKernels.H"
+#include <gtest/gtest.h>
+#include <cstring>
+#include <random>
+
+using namespace Foam;
+
+namespace
+{
+
+//- The same bits
+bool sameBits(const double a, const double b)
+{
+    return std::memcmp(&a, &b, sizeof(double)) == 0;
+}
+
+
+//- Random columns sorted by cell on a 2D grid, with every per-column array
+//  the kernels read or write, and random node fields
+struct laneCase
+{
+    gridGeometry g;
+    scatterSchedule schedule;
+    particleArrays p;
+    label gradU;
+    nodeBox nodes;
+    std::vector<double> h, a, kappa, Zb, gzx, gzy, gZx, gZy;
+    std::vector<double> sigma[3];
+    std::vector<double> s, k1, k2;
+    shallowGrid grid;
+
+    laneCase()
+    :
+        g(uniformGrid(2, {10, -5, 0}, {0.4, 0.5, 1}, {24, 20, 1})),
+        schedule(g),
+        gradU(p.addField("gradU", particleArrays::fieldKind::tensor))
+    {
+        std::mt19937 gen(17);
+        std::uniform_real_distribution<double> u(0, 1), v(-1, 1);
+        const label n = 4*g.nCellsTotal();
+        p.append(n);
+        for (label i = 0; i < n; ++i)
+        {
+            for (int d = 0; d < 2; ++d)
+            {
+                p.component(particleArrays::X + d)[i] =
+                    g.origin[d] + u(gen)*(g.upper(d) - g.origin[d]);
+                p.component(particleArrays::UX + d)[i] = v(gen);
+            }
+            p.component(particleArrays::M)[i] = 0.5 + u(gen);
+            p.component(particleArrays::VOL)[i] = 0.1 + u(gen);
+            for (int k = 0; k < 4; ++k)
+            {
+                p.component(gradU + k)[i] = v(gen);
+            }
+        }
+        p.sortByCell(g, schedule);
+        nodes = p.stencilNodes(g);
+
+        for (std::vector<double>* f : {&h, &a, &kappa, &Zb, &gzx, &gzy, &gZx,
+            &gZy, &sigma[0], &sigma[1], &sigma[2], &s, &k1, &k2})
+        {
+            f->resize(n);
+            for (double& x : *f)
+            {
+                x = v(gen);
+            }
+        }
+        for (label i = 0; i < n; ++i)
+        {
+            h[i] = 0.1 + u(gen);
+            kappa[i] = 0.5 + 0.5*u(gen);
+        }
+
+        grid.resize(g.nNodes());
+        for (label j = 0; j < g.nNodes(); ++j)
+        {
+            grid.h[j] = u(gen);
+            grid.zeta[j] = 2 + v(gen);
+            grid.Z[j] = v(gen);
+            grid.vx[j] = v(gen);
+            grid.vy[j] = v(gen);
+        }
+    }
+
+    shallowColumns columns()
+    {
+        shallowColumns c;
+        c.n = p.size();
+        c.x = p.component(particleArrays::X);
+        c.y = p.component(particleArrays::Y);
+        c.ux = p.component(particleArrays::UX);
+        c.uy = p.component(particleArrays::UY);
+        c.m = p.component(particleArrays::M);
+        c.V = p.component(particleArrays::VOL);
+        for (int k = 0; k < 4; ++k)
+        {
+            c.C[k] = p.component(gradU + k);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+            c.sigma[k] = sigma[k].data();
+        }
+        c.h = h.data();
+        c.a = a.data();
+        c.kappa = kappa.data();
+        c.Zb = Zb.data();
+        c.gradZetaX = gzx.data();
+        c.gradZetaY = gzy.data();
+        c.gradZx = gZx.data();
+        c.gradZy = gZy.data();
+        c.s = s.data();
+        c.k1 = k1.data();
+        c.k2 = k2.data();
+        return c;
+    }
+
+    columnScatter scatter() const
+    {
+        return columnScatter{g, nodes, schedule, p.binStart().data()};
+    }
+};
+
+
+template<class Kernel>
+void checkMomentum(const Kernel& kernel)
+{
+    laneCase t;
+    const columnScatter sc = t.scatter();
+    zeroNodes(t.g, t.nodes, t.grid);
+    scatterMomentum(sc, kernel, t.grid, t.columns());
+
+    const label nN = t.g.nNodes();
+    std::vector<double> mass(nN), momX(nN), momY(nN);
+    double* const mom[2] = {momX.data(), momY.data()};
+    particlesToGridMomentum<2>
+    (
+        t.g, t.schedule, kernel, t.nodes, t.p.binStart().data(),
+        affineArraysOf<2>(t.p, t.gradU), mass.data(), mom
+    );
+
+    typedef shallowGrid G;
+    for (label j = 0; j < nN; ++j)
+    {
+        const double* q = t.grid.momentum.data() + G::nMomentum*j;
+        ASSERT_TRUE(sameBits(q[G::M], mass[j])) << "node " << j;
+        ASSERT_TRUE(sameBits(q[G::PX], momX[j])) << "node " << j;
+        ASSERT_TRUE(sameBits(q[G::PY], momY[j])) << "node " << j;
+    }
+}
+
+
+template<class Kernel, bool GradientForm, bool Stress, bool Basal>
+void checkForces(const Kernel& kernel)
+{
+    laneCase t;
+    const columnScatter sc = t.scatter();
+    const shallowColumns cols = t.columns();
+    const double rho = 1800, gravity = 9.81;
+    zeroNodes(t.g, t.nodes, t.grid);
+    scatterForces<Kernel, GradientForm, Stress, Basal>
+    (
+        sc, kernel, t.grid, cols, rho, gravity
+    );
+
+    // The scalar sums, column by column in the same scatter order
+    const label nN = t.g.nNodes();
+    std::vector<double> F[2], B[3];
+    for (std::vector<double>* f : {&F[0], &F[1], &B[0], &B[1], &B[2]})
+    {
+        f->assign(nN, 0.0);
+    }
+    sc
+    (
+        kernel,
+        cols,
+        [&](const int32_t i, const stencil<2, Kernel>& st)
+        {
+            const columnLoads c =
+                loadsOf<GradientForm, Stress>(cols, i, rho, gravity);
+            st.forEachNode
+            (
+                [&]
+                (
+                    const int32_t j,
+                    const double N,
+                    const double* gN,
+                    const double*
+                )
+                {
+                    double Fx = N*c.bx + c.pre*gN[0];
+                    double Fy = N*c.by + c.pre*gN[1];
+                    if (Stress)
+                    {
+                        Fx -= c.sxx*gN[0] + c.sxy*gN[1];
+                        Fy -= c.sxy*gN[0] + c.syy*gN[1];
+                    }
+                    F[0][j] += Fx;
+                    F[1][j] += Fy;
+                    if (Basal)
+                    {
+                        B[0][j] += N*cols.s[i];
+                        B[1][j] += N*cols.k1[i];
+                        B[2][j] += N*cols.k2[i];
+                    }
+                }
+            );
+        }
+    );
+
+    typedef shallowGrid L;
+    for (label j = 0; j < nN; ++j)
+    {
+        const double* l = t.grid.loads.data() + L::nLoads*j;
+        ASSERT_TRUE(sameBits(l[L::FX], F[0][j])) << "node " << j;
+        ASSERT_TRUE(sameBits(l[L::FY], F[1][j])) << "node " << j;
+        ASSERT_TRUE(sameBits(l[L::S], B[0][j])) << "node " << j;
+        ASSERT_TRUE(sameBits(l[L::K1], B[1][j])) << "node " << j;
+        ASSERT_TRUE(sameBits(l[L::K2], B[2][j])) << "node " << j;
+    }
+}
+
+
+template<class Kernel, bool Terrain>
+void checkSurfaceGather(const Kernel& kernel)
+{
+    laneCase t;
+    const shallowColumns cols = t.columns();
+    const double hMin = 0.05;
+    for (label i = 0; i < cols.n; ++i)
+    {
+        const stencil<2, Kernel> st(t.g, kernel, cols.x[i], cols.y[i], 0);
+        gatherColumn<Kernel, Terrain>(st, t.grid, cols, i, hMin, true);
+
+        double h = 0, Zb = 0, gzx = 0, gzy = 0, gZx = 0, gZy = 0;
+        st.forEachNode
+        (
+            [&]
+            (
+                const int32_t j,
+                const double N,
+                const double* gN,
+                const double*
+            )
+            {
+                h += N*t.grid.h[j];
+                gzx += t.grid.zeta[j]*gN[0];
+                gzy += t.grid.zeta[j]*gN[1];
+                if (Terrain)
+                {
+                    Zb += N*t.grid.Z[j];
+                    gZx += t.grid.Z[j]*gN[0];
+                    gZy += t.grid.Z[j]*gN[1];
+                }
+            }
+        );
+        ASSERT_TRUE(sameBits(cols.h[i], h)) << "column " << i;
+        ASSERT_TRUE(sameBits(cols.a[i], cols.V[i]/(h > hMin ? h : hMin)));
+        ASSERT_TRUE(sameBits(cols.gradZetaX[i], gzx)) << "column " << i;
+        ASSERT_TRUE(sameBits(cols.gradZetaY[i], gzy)) << "column " << i;
+        if (Terrain)
+        {
+            ASSERT_TRUE(sameBits(cols.Zb[i], Zb)) << "column " << i;
+            ASSERT_TRUE(sameBits(cols.gradZx[i], gZx)) << "column " << i;
+            ASSERT_TRUE(sameBits(cols.gradZy[i], gZy)) << "column " << i;
+            ASSERT_TRUE
+            (
+                sameBits(cols.kappa[i], 1/(1 + gZx*gZx + gZy*gZy))
+            ) << "column " << i;
+        }
+    }
+}
+
+
+template<class Kernel>
+void checkVelocityGather(const Kernel& kernel)
+{
+    laneCase t;
+    const double* const nodeVel[2] = {t.grid.vx.data(), t.grid.vy.data()};
+    const affineArrays<2> cols = affineArraysOf<2>(t.p, t.gradU);
+    gridToParticlesVelocity<2>(t.g, kernel, cols, nodeVel);
+    for (label i = 0; i < cols.n; ++i)
+    {
+        const stencil<2, Kernel> st
+        (
+            t.g, kernel, cols.x[0][i], cols.x[1][i], cols.x[2][i]
+        );
+        double v[2] = {0, 0};
+        double L[2][2] = {{0, 0}, {0, 0}};
+        gatherNodeVelocity<2, Kernel>(st, nodeVel, v, L);
+        for (int a = 0; a < 2; ++a)
+        {
+            ASSERT_TRUE(sameBits(cols.u[a][i], v[a])) << "column " << i;
+            for (int b = 0; b < 2; ++b)
+            {
+                ASSERT_TRUE(sameBits(cols.C[2*a + b][i], L[a][b]))
+                    << "column " << i;
+            }
+        }
+    }
+}
+
+
+GIMPKernel gimp()
+{
+    GIMPKernel k;
+    k.lp = 0.25;
+    return k;
+}
+
+} // End anonymous namespace
+
+
+TEST(vectorLanes, MomentumScatterIsTheScalarSumBitForBit)
+{
+    checkMomentum(linearKernel());
+    checkMomentum(gimp());
+    checkMomentum(quadraticBSplineKernel());
+}
+
+
+TEST(vectorLanes, ForceScatterIsTheScalarSumBitForBit)
+{
+    checkForces<linearKernel, true, false, false>(linearKernel());
+    checkForces<GIMPKernel, true, true, true>(gimp());
+    checkForces<quadraticBSplineKernel, true, true, true>
+    (
+        quadraticBSplineKernel()
+    );
+    checkForces<quadraticBSplineKernel, false, true, false>
+    (
+        quadraticBSplineKernel()
+    );
+    checkForces<quadraticBSplineKernel, false, false, true>
+    (
+        quadraticBSplineKernel()
+    );
+}
+
+
+TEST(vectorLanes, SurfaceGatherIsTheScalarSumBitForBit)
+{
+    checkSurfaceGather<linearKernel, true>(linearKernel());
+    checkSurfaceGather<GIMPKernel, false>(gimp());
+    checkSurfaceGather<quadraticBSplineKernel, true>(quadraticBSplineKernel());
+    checkSurfaceGather<quadraticBSplineKernel, false>(quadraticBSplineKernel());
+}
+
+
+TEST(vectorLanes, VelocityGatherIsTheScalarSumBitForBit)
+{
+    checkVelocityGather(linearKernel());
+    checkVelocityGather(gimp());
+    checkVelocityGather(quadraticBSplineKernel());
+}
+
+
+// ************************************************************************* //
