@@ -17,6 +17,7 @@ Description
     - the force scatter (S7) against its scalar form, in the same scatter
       order, for the gradient and divergence forms, with and without
       stress and basal coefficients;
+    - the node values that pad the lanes stay +0;
     - the surface gather (S5) against its scalar form, with and without
       terrain;
     - the velocity gather of G2P against the generic (any Dim) sum.
@@ -174,6 +175,7 @@ void checkMomentum(const Kernel& kernel)
         ASSERT_TRUE(sameBits(q[G::M], mass[j])) << "node " << j;
         ASSERT_TRUE(sameBits(q[G::PX], momX[j])) << "node " << j;
         ASSERT_TRUE(sameBits(q[G::PY], momY[j])) << "node " << j;
+        ASSERT_TRUE(sameBits(q[G::momentumPad], 0.0)) << "node " << j;
     }
 }
 
@@ -245,6 +247,10 @@ void checkForces(const Kernel& kernel)
         ASSERT_TRUE(sameBits(l[L::S], B[0][j])) << "node " << j;
         ASSERT_TRUE(sameBits(l[L::K1], B[1][j])) << "node " << j;
         ASSERT_TRUE(sameBits(l[L::K2], B[2][j])) << "node " << j;
+        for (const int pad : {2, 3, 7})
+        {
+            ASSERT_TRUE(sameBits(l[pad], 0.0)) << "node " << j;
+        }
     }
 }
 
