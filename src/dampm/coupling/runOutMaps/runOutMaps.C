@@ -13,6 +13,7 @@ License
 #include "exactPrecision.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
+#include "vectorLanes.H"
 #include <algorithm>
 #include <cmath>
 
@@ -221,13 +222,13 @@ void Foam::runOutMaps::update(const particleArrays& particles)
                 {
                     continue;
                 }
-                double* s =
-                    sums_.data() + nSums*g.nodeIndex(i + (c & 1), row, 0);
+                // (w m, w m ux, w m uy, w V): w m times (1, ux, uy) is exact
+                static_assert(nSums == 4, "a node's sums are four lanes");
                 const double wm = w[c]*m[p];
-                s[0] += wm;
-                s[1] += wm*ux[p];
-                s[2] += wm*uy[p];
-                s[3] += w[c]*V[p];
+                asLanes<lanes4>
+                (
+                    sums_.data() + nSums*g.nodeIndex(i + (c & 1), row, 0)
+                ) += lanes4{wm, wm, wm, w[c]}*lanes4{1, ux[p], uy[p], V[p]};
             }
             bandLo[0] = std::min(bandLo[0], i);
             bandLo[1] = std::min(bandLo[1], j);
