@@ -10,7 +10,9 @@ Description
     viscoplasticFluid (Newtonian, Bingham, HerschelBulkley) against its
     closed forms (materialModelTest.C checks the coefficients' ranges):
     - Tait's pressure rho c^2/gamma (J^-gamma - 1), cut at pMin, and the
-      rest volume restJ its inverse;
+      rest volume restJ its inverse; J^-gamma by squaring for a whole
+      exponent up to 16 (within gamma epsilon of std::pow), std::pow's
+      for any other;
     - Newtonian: sigma = 2 mu dev(D) - p(J) I, with no stress memory;
     - HerschelBulkley, purely viscous: the shear stress
       k gammaDot^n + tauY (1 - exp(-m gammaDot));
@@ -22,8 +24,10 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "materialState.H"
+#include "viscoplasticFluid.H"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <limits>
 
 using namespace Foam;
 
@@ -82,6 +86,54 @@ TEST(viscoplasticFluid, TaitPressureCutAtPMinAndItsRestVolume)
         }
     }
     EXPECT_EQ(water->waveSpeed(), c);
+}
+
+
+TEST(viscoplasticFluid, WholeTaitExponentsTakePowersBySquaring)
+{
+    // J^n by any chain of products is within (n - 1)/2 epsilon of the
+    // exact power (first order), its inverse within n/2: gamma epsilon
+    // holds it with std::pow's own half unit
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (const double g : {1.0, 2.0, 7.0, 16.0, 7.5, 17.0})
+    {
+        autoPtr<materialModel> m
+        (
+            materialModel::New
+            (
+                materialDict
+                (
+                    "Newtonian",
+                    "rho 1000; c 20; gamma " + std::to_string(g) + "; mu 0;"
+                )
+            )
+        );
+        const auto& fluid =
+            dynamic_cast<const materialModels::viscoplasticFluid&>(*m);
+        const bool whole = g == std::round(g) && g <= 16;
+        double worst = 0;
+        for (int k = 0; k <= 400; ++k)
+        {
+            const double J = 0.9 + 0.2*k/400 + 1e-7*k*k;
+            const double exact = std::pow(J, -g);
+            const double power = fluid.inversePower(J);
+            if (whole)
+            {
+                EXPECT_NEAR(power, exact, g*eps*exact) << g << " " << J;
+                worst = std::max(worst, std::abs(power/exact - 1)/eps);
+            }
+            else
+            {
+                EXPECT_EQ(power, exact) << g << " " << J;
+            }
+        }
+        // Not std::pow itself: 401 values of J^-7 all the same to the bit
+        // would be a squaring that is not taken
+        if (g == 7)
+        {
+            EXPECT_GT(worst, 0);
+        }
+    }
 }
 
 

@@ -78,6 +78,12 @@ Foam::materialModels::viscoplasticFluid::viscoplasticFluid
     // rho and c within their ranges: rho c^2 and its quarter are finite
     c_(readCoeff("c", soundSpeedRange)),
     gamma_(readCoeffOrDefault("gamma", 7, exponentRange)),
+    wholeGamma_
+    (
+        gamma_ == std::round(gamma_) && gamma_ >= 1 && gamma_ <= 16
+      ? int(gamma_)
+      : 0
+    ),
     pMin_(readCoeffOrDefault("pMin", 0, pressureCutRange)),
     G_
     (
