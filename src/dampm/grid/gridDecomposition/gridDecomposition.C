@@ -126,7 +126,7 @@ void Foam::gridDecomposition::findNeighbours()
         if (overlaps)
         {
             const nodeBox overlap = toLocal(lo, hi);
-            neighbours_.push_back({p, overlap, overlap});
+            neighbours_.append({p, overlap, overlap});
         }
     }
 }

@@ -52,7 +52,7 @@ void Foam::topographyModel::sampleNodes
     // (or too large to compute with) is found here and refused by its node
     const gridGeometry::index nG = gridGeometry::nGhost;
     label bad = -1, badSlope = -1;
-    vector2D slope;
+    vector2D slope(Zero);
     {
         fpTrapsHeld masked;
         for (label j = 0; j < g.nNodesDir[1]; ++j)
