@@ -92,7 +92,7 @@ void Foam::nodeContact::finishSearch
     // A decomposed grid's part counts the force of the nodes it owns only:
     // the processors' sums add up to the whole barrier's
     nOwned_ = 0;
-    for (std::size_t c = 0; c < nodes_.size(); ++c)
+    for (label c = 0; c < label(nodes_.size()); ++c)
     {
         const bool own = g.ownsNode(nodes_[c]);
         share_[c] = own ? domainShare(g, wall, nodes_[c]) : 0;
@@ -159,7 +159,7 @@ void Foam::nodeContact::warnIfThin(const gridGeometry& g) const
         order.begin(), order.end(),
         [&](const label a, const label b) { return nodes_[a] < nodes_[b]; }
     );
-    for (size_t k = 0; k < order.size(); ++k)
+    for (label k = 0; k < label(order.size()); ++k)
     {
         sorted[k] = nodes_[order[k]];
     }
@@ -170,7 +170,7 @@ void Foam::nodeContact::warnIfThin(const gridGeometry& g) const
         return it != sorted.end() && *it == n ? order[it - sorted.begin()] : -1;
     };
     label nThin = 0;
-    for (std::size_t c = 0; c < nodes_.size(); ++c)
+    for (label c = 0; c < label(nodes_.size()); ++c)
     {
         if (!(depth[c] < h))
         {
@@ -281,7 +281,7 @@ void Foam::nodeContact::nodePressure
     // a plane slice) takes no force
     const double faceArea[3] =
         {g.dx[1]*g.dx[2], g.dx[2]*g.dx[0], g.dx[0]*g.dx[1]};
-    for (std::size_t c = 0; c < nodes_.size(); ++c)
+    for (label c = 0; c < label(nodes_.size()); ++c)
     {
         double area = 0;
         for (int d = 0; d < 3; ++d)
