@@ -121,6 +121,104 @@ Foam::scalar Foam::materialModels::viscoplasticFluid::restJ
 }
 
 
+template<bool Maxwell>
+void Foam::materialModels::viscoplasticFluid::updateBlock
+(
+    const materialParticles& mp,
+    const label first,
+    const label n,
+    const scalar dt
+) const
+{
+    const double* const* L = mp.L;
+    double* const* sigma = mp.sigma;
+
+    // Deviatoric strain rate, symmetric: xx xy xz yy yz zz. The trace
+    // (div with volumetric smoothing) drops out of the deviator, so it is
+    // taken from L itself
+    alignas(64) double D[6][blockSize];
+    alignas(64) double gammaDot[blockSize];
+    #pragma omp simd
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = first + k;
+        const double mean = (L[0][i] + L[4][i] + L[8][i])/3;
+        D[0][k] = L[0][i] - mean;
+        D[1][k] = 0.5*(L[1][i] + L[3][i]);
+        D[2][k] = 0.5*(L[2][i] + L[6][i]);
+        D[3][k] = L[4][i] - mean;
+        D[4][k] = 0.5*(L[5][i] + L[7][i]);
+        D[5][k] = L[8][i] - mean;
+        const double normSqr =
+            D[0][k]*D[0][k] + D[3][k]*D[3][k] + D[5][k]*D[5][k]
+          + 2*(D[1][k]*D[1][k] + D[2][k]*D[2][k] + D[4][k]*D[4][k]);
+        gammaDot[k] = std::sqrt(2*normSqr);
+    }
+
+    // Per particle, in scalar code: the viscosity, the Maxwell element's
+    // decay over the step (0: no stress memory) and the pressure
+    alignas(64) double twoMu[blockSize];
+    alignas(64) double decay[blockSize];
+    alignas(64) double pressureOf[blockSize];
+    for (label k = 0; k < n; ++k)
+    {
+        const double mu = viscosity_(gammaDot[k]);
+        twoMu[k] = 2*mu;
+        decay[k] = Maxwell && mu > 0 ? std::exp(-G_*dt/mu) : 0;
+        pressureOf[k] = pressure(mp.J[first + k]);
+    }
+
+    // The stress: 2 mu D, with a Maxwell element relaxed towards it from
+    // the last deviatoric stress rotated over the step (Jaumann:
+    // s + dt (W s - s W), W the spin), then the pressure. W s - s W =
+    // A + A^T with A = W s, written out for the symmetric s and the spin's
+    // three components; its trace is zero, so the rotated stress's deviator
+    // is the deviator of s plus it
+    #pragma omp simd
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = first + k;
+        double s[6];
+        for (int m = 0; m < 6; ++m)
+        {
+            s[m] = twoMu[k]*D[m][k];
+        }
+        if (Maxwell)
+        {
+            const double a = 0.5*(L[1][i] - L[3][i]);
+            const double b = 0.5*(L[2][i] - L[6][i]);
+            const double c = 0.5*(L[5][i] - L[7][i]);
+            const double sxx = sigma[0][i], sxy = sigma[1][i];
+            const double sxz = sigma[2][i], syy = sigma[3][i];
+            const double syz = sigma[4][i], szz = sigma[5][i];
+            const double mean = (sxx + syy + szz)/3;
+            const double s0[6] =
+            {
+                sxx - mean + dt*2*(a*sxy + b*sxz),
+                sxy + dt*(a*(syy - sxx) + b*syz + c*sxz),
+                sxz + dt*(b*(szz - sxx) + a*syz - c*sxy),
+                syy - mean + dt*2*(c*syz - a*sxy),
+                syz + dt*(c*(szz - syy) - a*sxz - b*sxy),
+                szz - mean - dt*2*(b*sxz + c*syz)
+            };
+            const bool relaxes = decay[k] > 0;
+            for (int m = 0; m < 6; ++m)
+            {
+                s[m] = relaxes ? s[m] + (s0[m] - s[m])*decay[k] : s[m];
+            }
+        }
+        s[0] -= pressureOf[k];
+        s[3] -= pressureOf[k];
+        s[5] -= pressureOf[k];
+        for (int m = 0; m < 6; ++m)
+        {
+            sigma[m][i] = s[m];
+        }
+        mp.p[i] = -(s[0] + s[3] + s[5])/3;
+    }
+}
+
+
 void Foam::materialModels::viscoplasticFluid::updateStress
 (
     particleArrays&,
@@ -128,29 +226,21 @@ void Foam::materialModels::viscoplasticFluid::updateStress
     const scalar dt
 ) const
 {
-    typedef materialParticles::tensor3 tensor3;
-    const double G = G_;
+    const label nBlocks = (mp.n + blockSize - 1)/blockSize;
 
     #pragma omp parallel for schedule(static)
-    for (label i = 0; i < mp.n; ++i)
+    for (label b = 0; b < nBlocks; ++b)
     {
-        const tensor3 l = mp.gradU(i);
-        const tensor3 D = materialParticles::dev(mp.strainRate(i, l));
-        const double gammaDot = std::sqrt(2*D.squaredNorm());
-        const double mu = viscosity_(gammaDot);
-
-        tensor3 s = 2*mu*D;
-        if (G > 0 && mu > 0)
+        const label first = b*blockSize;
+        const label n = min(label(blockSize), mp.n - first);
+        if (G_ > 0)
         {
-            // Maxwell relaxation towards 2 mu D, exact over the step
-            const tensor3 s0 = materialParticles::dev
-            (
-                materialParticles::rotate(mp.stress(i), l, dt)
-            );
-            s += (s0 - s)*std::exp(-G*dt/mu);
+            updateBlock<true>(mp, first, n, dt);
         }
-        s.diagonal().array() -= pressure(mp.J[i]);
-        mp.setStress(i, s);
+        else
+        {
+            updateBlock<false>(mp, first, n, dt);
+        }
     }
 }
 
