@@ -155,8 +155,9 @@ void Foam::materialModels::viscoplasticFluid::updateBlock
         gammaDot[k] = std::sqrt(2*normSqr);
     }
 
-    // Per particle, in scalar code: the viscosity, the Maxwell element's
-    // decay over the step (0: no stress memory) and the pressure
+    // Per particle, in scalar code, since the viscosity law and the Tait
+    // power branch and call expm1, pow and exp: the viscosity, the Maxwell
+    // element's decay over the step (0: no stress memory) and the pressure
     alignas(64) double twoMu[blockSize];
     alignas(64) double decay[blockSize];
     alignas(64) double pressureOf[blockSize];
@@ -185,22 +186,24 @@ void Foam::materialModels::viscoplasticFluid::updateBlock
         }
         if (Maxwell)
         {
-            const double a = 0.5*(L[1][i] - L[3][i]);
-            const double b = 0.5*(L[2][i] - L[6][i]);
-            const double c = 0.5*(L[5][i] - L[7][i]);
+            const double wxy = 0.5*(L[1][i] - L[3][i]);
+            const double wxz = 0.5*(L[2][i] - L[6][i]);
+            const double wyz = 0.5*(L[5][i] - L[7][i]);
             const double sxx = sigma[0][i], sxy = sigma[1][i];
             const double sxz = sigma[2][i], syy = sigma[3][i];
             const double syz = sigma[4][i], szz = sigma[5][i];
             const double mean = (sxx + syy + szz)/3;
             const double s0[6] =
             {
-                sxx - mean + dt*2*(a*sxy + b*sxz),
-                sxy + dt*(a*(syy - sxx) + b*syz + c*sxz),
-                sxz + dt*(b*(szz - sxx) + a*syz - c*sxy),
-                syy - mean + dt*2*(c*syz - a*sxy),
-                syz + dt*(c*(szz - syy) - a*sxz - b*sxy),
-                szz - mean - dt*2*(b*sxz + c*syz)
+                sxx - mean + dt*2*(wxy*sxy + wxz*sxz),
+                sxy + dt*(wxy*(syy - sxx) + wxz*syz + wyz*sxz),
+                sxz + dt*(wxz*(szz - sxx) + wxy*syz - wyz*sxy),
+                syy - mean + dt*2*(wyz*syz - wxy*sxy),
+                syz + dt*(wyz*(szz - syy) - wxy*sxz - wxz*sxy),
+                szz - mean - dt*2*(wxz*sxz + wyz*syz)
             };
+            // No decay (mu = 0, or exp underflowing): the viscous stress,
+            // as s + (s0 - s) 0 gives for a finite s0
             const bool relaxes = decay[k] > 0;
             for (int m = 0; m < 6; ++m)
             {
@@ -229,9 +232,9 @@ void Foam::materialModels::viscoplasticFluid::updateStress
     const label nBlocks = (mp.n + blockSize - 1)/blockSize;
 
     #pragma omp parallel for schedule(static)
-    for (label b = 0; b < nBlocks; ++b)
+    for (label blocki = 0; blocki < nBlocks; ++blocki)
     {
-        const label first = b*blockSize;
+        const label first = blocki*blockSize;
         const label n = min(label(blockSize), mp.n - first);
         if (G_ > 0)
         {
