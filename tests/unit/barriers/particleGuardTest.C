@@ -27,14 +27,20 @@ Description
     - triSurface (the box of surfaceCase.H): a particle entering through
       the top face is put back on it and loses its velocity into it (slip;
       Coulomb with mu = 0.1 halves its 0.2 m/s along the face against
-      1 m/s into it).
+      1 m/s into it); and 20,000 particles moved at random by up to a
+      cell, in and around it: every one that entered is put back, not
+      inside, the others are left alone, and two threads
+      give what one gives, bit for bit (the screen by the cells' corners
+      and the octree queried from both threads).
 
 \*---------------------------------------------------------------------------*/
 
 #include "barrierProbe.H"
 #include "surfaceCase.H"
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <cmath>
+#include <random>
 
 using namespace Foam;
 
@@ -212,6 +218,79 @@ TEST(particleGuard, EnteringParticleStopsOnTheSurfaceFaceItCrossed)
             << c.first;
         EXPECT_LT(mag(v - c.second), 1e-15) << c.first;
         EXPECT_LT(mag(F - 0.01*(u - c.second)/1e-3), 1e-12) << c.first;
+    }
+}
+
+
+TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
+{
+    const surfaceCase surfaces;
+    constexpr label n = 20000;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    pointField x0(n), x1(n);
+    vectorField v0(n);
+    for (label i = 0; i < n; ++i)
+    {
+        // Within 0.1 m of the box (0.375 0.375 0.25)-(0.625 0.75 0.875);
+        // moved by up to about a cell
+        x0[i] = point
+        (
+            0.5 + 0.225*u(rng), 0.5625 + 0.2875*u(rng), 0.5625 + 0.4125*u(rng)
+        );
+        const vector move(0.06*u(rng), 0.09*u(rng), 0.12*u(rng));
+        x1[i] = x0[i] + move;
+        v0[i] = move/1e-3;
+    }
+
+    const int threads = omp_get_max_threads();
+    pointField x[2] = {x1, x1};
+    vectorField v[2] = {v0, v0};
+    vector F[2];
+    label stopped[2];
+    for (int t = 0; t < 2; ++t)
+    {
+        barrierProbe probe
+        (
+            "type triSurface; file box.stl; contact slip;", surfaces.dir()
+        );
+        omp_set_num_threads(t + 1);
+        stopped[t] = probe.entries(x0, x[t], v[t], 0.01, 1e-3, F[t]);
+        omp_set_num_threads(threads);
+
+        label nEntered = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar phi0 = probe.distance(x0[i]);
+            const scalar phi1 = probe.distance(x1[i]);
+            if (phi0 > 0 && phi1 < 0)
+            {
+                // Put back: on the face it entered (its end point
+                // projected on the face's plane, outside by less than the
+                // move by an edge), or at the entry point (bisection, to
+                // 2^-30 of the move); its velocity into the face removed
+                ++nEntered;
+                const scalar moved = mag(x1[i] - x0[i]);
+                const scalar phi = probe.distance(x[t][i]);
+                EXPECT_GE(phi, -1e-9*moved) << x0[i] << " -> " << x1[i];
+                EXPECT_LE(phi, moved) << x0[i] << " -> " << x1[i];
+                EXPECT_LT(mag(v[t][i]), mag(v0[i])) << x0[i];
+            }
+            else
+            {
+                EXPECT_EQ(x[t][i], x1[i]) << x0[i] << " -> " << x1[i];
+                EXPECT_EQ(v[t][i], v0[i]) << x0[i];
+            }
+        }
+        EXPECT_EQ(stopped[t], nEntered);
+        EXPECT_GT(nEntered, n/50);
+    }
+    EXPECT_EQ(stopped[1], stopped[0]);
+    EXPECT_EQ(F[1], F[0]);
+    for (label i = 0; i < n; ++i)
+    {
+        EXPECT_EQ(x[1][i], x[0][i]) << i;
+        EXPECT_EQ(v[1][i], v[0][i]) << i;
     }
 }
 

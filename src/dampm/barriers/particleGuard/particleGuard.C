@@ -129,7 +129,7 @@ void Foam::particleGuard::addNode
 }
 
 
-void Foam::particleGuard::guardInside
+void Foam::particleGuard::insideBeyondDepth
 (
     const pointField& points,
     boolList& in
@@ -146,6 +146,38 @@ void Foam::particleGuard::guardInside
 }
 
 
+void Foam::particleGuard::guardInside
+(
+    const pointField& points,
+    boolList& in
+) const
+{
+    // In chunks, on all threads where the geometry allows: the bisection
+    // of stopEntries queries every entered particle 30 times
+    constexpr label chunk = 1024;
+    const label n = points.size();
+    const label nChunks = (n + chunk - 1)/chunk;
+    if (nChunks <= 1 || !geometry_.threadSafeDistance())
+    {
+        insideBeyondDepth(points, in);
+        return;
+    }
+    in.setSize(n);
+    #pragma omp parallel for schedule(dynamic)
+    for (label c = 0; c < nChunks; ++c)
+    {
+        const label first = c*chunk;
+        const label size = min(chunk, n - first);
+        boolList partIn;
+        insideBeyondDepth
+        (
+            pointField(SubList<point>(points, size, first)), partIn
+        );
+        SubList<bool>(in, size, first) = partIn;
+    }
+}
+
+
 bool Foam::particleGuard::mayBeDeep
 (
     const gridGeometry& g,
@@ -154,29 +186,38 @@ bool Foam::particleGuard::mayBeDeep
     const double z
 ) const
 {
-    // A non-finite position has no nearest node: the exact test answers
+    // A non-finite position has no cell: the exact test answers
     if (nodeClearance_.empty() || !std::isfinite(x + y + z))
     {
         return true;
     }
+    // Each corner n of the point's cell bounds phi >= phi_n - r_n: the
+    // point is not deeper than the guard's depth where one corner's
+    // clearance phi_n + guardDepth (less the margin) is at least r_n. The
+    // best of the eight corners, not only the nearest: particles lying
+    // against a face pass the nearest corner's bound but often not a
+    // farther one on their side of the face
     const double xyz[3] = {x, y, z};
     gridGeometry::index ijk[3];
-    double r2 = 0;
+    double r2[3][2];
     for (int d = 0; d < 3; ++d)
     {
-        const double l = std::min
-        (
-            std::max(std::round(g.local(d, xyz[d])), 0.0),
-            double(g.nCells[d])
-        );
-        ijk[d] = gridGeometry::index(l);
-        r2 += sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
+        ijk[d] = g.cellDir(d, xyz[d]);
+        r2[d][0] = sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
+        r2[d][1] = sqr(xyz[d] - g.nodeCoord(d, ijk[d] + 1));
     }
-    // phi >= phi_n - r: not deeper than the guard's depth while the node's
-    // clearance phi_n + guardDepth (less the margin) is at least r
-    return
-        nodeClearance_[g.nodeIndex(ijk[0], ijk[1], ijk[2])]
-      < std::sqrt(r2);
+    for (int c = 0; c < 8; ++c)
+    {
+        const int a = c & 1, b = (c >> 1) & 1, e = (c >> 2) & 1;
+        const float clear =
+            nodeClearance_[g.nodeIndex(ijk[0] + a, ijk[1] + b, ijk[2] + e)];
+        // (a float squared is exact in double)
+        if (clear >= 0 && double(clear)*clear >= r2[0][a] + r2[1][b] + r2[2][e])
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 

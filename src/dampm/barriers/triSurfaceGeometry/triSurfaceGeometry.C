@@ -128,6 +128,26 @@ void Foam::barrierGeometries::triSurfaceGeometry::readSurface()
     orient(path);
     outwardNormal_ = surface_->faceNormals();
     search_.reset(new triSurfaceSearch(*surface_));
+    buildSearch();
+}
+
+
+void Foam::barrierGeometries::triSurfaceGeometry::buildSearch() const
+{
+    // OpenFOAM builds the octree, its octants' inside/outside types and
+    // the surface's addressing on first use: built here, once, queries only
+    // read them and may run on several threads at once. (The addressing is
+    // what the octree's inside test reads: treeDataPrimitivePatch::
+    // getVolumeType)
+    const triSurface& surf = *surface_;
+    surf.localFaces();
+    surf.meshPoints();
+    surf.edges();
+    surf.faceEdges();
+    surf.edgeFaces();
+    surf.faceNormals();
+    surf.pointNormals();
+    search_->calcInside(pointField(1, bounds().centre()));
 }
 
 
@@ -276,17 +296,20 @@ void Foam::barrierGeometries::triSurfaceGeometry::distance
     vectorField& normal
 ) const
 {
-    List<pointIndexHit> hits;
-    search_->findNearest(points, scalarField(points.size(), GREAT), hits);
+    // The octree's own query, not triSurfaceSearch::findNearest, which
+    // sets (and resets) a static tolerance, a race between threads; the
+    // same nearest triangle
+    const indexedOctree<treeDataTriSurface>& tree = search_->tree();
     const boolList inside(search_->calcInside(points));
 
     phi.setSize(points.size());
     normal.setSize(points.size());
     forAll(points, i)
     {
-        const scalar d = mag(points[i] - hits[i].hitPoint());
+        const pointIndexHit hit = tree.findNearest(points[i], GREAT);
+        const scalar d = mag(points[i] - hit.hitPoint());
         phi[i] = inside[i] ? -d : d;
-        normal[i] = outwardNormal_[hits[i].index()];
+        normal[i] = outwardNormal_[hit.index()];
     }
 }
 
