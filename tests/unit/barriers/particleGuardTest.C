@@ -27,7 +27,7 @@ Description
     - triSurface (the box of surfaceCase.H): a particle entering through
       the top face is put back on it and loses its velocity into it (slip;
       Coulomb with mu = 0.1 halves its 0.2 m/s along the face against
-      1 m/s into it); and 20,000 particles moved at random by up to a
+      1 m/s into it); and 40,000 particles moved at random by up to a
       cell, in and around it: every one that entered is put back, not
       inside, the others are left alone, and two threads
       give what one gives, bit for bit (the screen by the cells' corners
@@ -37,8 +37,8 @@ Description
 
 #include "barrierProbe.H"
 #include "surfaceCase.H"
+#include "threadCount.H"
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <cmath>
 #include <random>
 
@@ -225,7 +225,7 @@ TEST(particleGuard, EnteringParticleStopsOnTheSurfaceFaceItCrossed)
 TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
 {
     const surfaceCase surfaces;
-    constexpr label n = 20000;
+    constexpr label n = 40000;
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-1, 1);
     pointField x0(n), x1(n);
@@ -243,7 +243,6 @@ TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
         v0[i] = move/1e-3;
     }
 
-    const int threads = omp_get_max_threads();
     pointField x[2] = {x1, x1};
     vectorField v[2] = {v0, v0};
     vector F[2];
@@ -254,9 +253,10 @@ TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
         (
             "type triSurface; file box.stl; contact slip;", surfaces.dir()
         );
-        omp_set_num_threads(t + 1);
-        stopped[t] = probe.entries(x0, x[t], v[t], 0.01, 1e-3, F[t]);
-        omp_set_num_threads(threads);
+        {
+            const threadCount threads(t + 1);
+            stopped[t] = probe.entries(x0, x[t], v[t], 0.01, 1e-3, F[t]);
+        }
 
         label nEntered = 0;
         for (label i = 0; i < n; ++i)
@@ -283,7 +283,8 @@ TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
             }
         }
         EXPECT_EQ(stopped[t], nEntered);
-        EXPECT_GT(nEntered, n/50);
+        // More than a chunk of the bisection's (1,024)
+        EXPECT_GT(nEntered, 2048);
     }
     EXPECT_EQ(stopped[1], stopped[0]);
     EXPECT_EQ(F[1], F[0]);

@@ -14,14 +14,16 @@ Description
     the nearest face, edge or corner, with the nearest triangle's outward
     normal; inside as the distance says; bounded by the box. Queried
     from four threads at once right after it is built (its search is
-    built at construction): every point's distance is the box's own.
+    built at construction), the box and two cubes apart (between which
+    points are often nearest a corner): what one thread gives, bit for bit,
+    and the shape's distance.
 
 \*---------------------------------------------------------------------------*/
 
 #include "barrierProbe.H"
 #include "surfaceCase.H"
+#include "threadCount.H"
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <cmath>
 #include <random>
 
@@ -30,17 +32,34 @@ using namespace Foam;
 namespace
 {
 
-//- Signed distance to the box of surfaceCase.H (negative inside)
-scalar boxDistance(const point& x)
+//- Signed distance to the box from lo to hi (negative inside)
+scalar boxDistance(const point& x, const point& lo, const point& hi)
 {
-    const point c(0.5, 0.5625, 0.5625);
-    const vector h(0.125, 0.1875, 0.3125);
     vector q;
     for (direction d = 0; d < 3; ++d)
     {
-        q[d] = mag(x[d] - c[d]) - h[d];
+        q[d] = mag(x[d] - 0.5*(lo[d] + hi[d])) - 0.5*(hi[d] - lo[d]);
     }
     return mag(max(q, vector(Zero))) + min(cmptMax(q), scalar(0));
+}
+
+
+//- Signed distance to the shapes of surfaceCase.H's box.stl and
+//  twoBoxes.stl (the two cubes apart: the nearer one's)
+scalar shapeDistance(const word& file, const point& x)
+{
+    if (file == "box.stl")
+    {
+        return boxDistance
+        (
+            x, point(0.375, 0.375, 0.25), point(0.625, 0.75, 0.875)
+        );
+    }
+    return min
+    (
+        boxDistance(x, point::uniform(0.25), point::uniform(0.4375)),
+        boxDistance(x, point::uniform(0.5625), point::uniform(0.75))
+    );
 }
 
 } // End anonymous namespace
@@ -95,58 +114,81 @@ TEST(triSurfaceGeometry, SignedDistanceAndOutwardNormalOfAClosedSurface)
 }
 
 
-TEST(triSurfaceGeometry, QueriesFromSeveralThreadsAtOnceAreTheBoxDistance)
+TEST(triSurfaceGeometry, QueriesFromSeveralThreadsAtOnceAreThoseOfOne)
 {
     const surfaceCase surfaces;
-    const autoPtr<barrierGeometry> surface
-    (
-        readGeometry("type triSurface; file box.stl;", surfaces.dir())
-    );
-    ASSERT_TRUE(surface->threadSafeDistance());
 
-    // Points in and around the box, a chunk per thread; the first queries
-    // of the geometry are these
+    // Points in and around each surface's box (the octree's box): between
+    // the two cubes many are nearest a corner of one, by the box a face
+    // or an edge. A chunk per thread; the first queries of the geometry
     constexpr label nChunks = 8, chunk = 2000;
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> u(0, 1);
-    List<pointField> points(nChunks, pointField(chunk));
-    for (pointField& pts : points)
+    for (const word file : {"box.stl", "twoBoxes.stl"})
     {
-        for (point& x : pts)
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> u(0, 1);
+        List<pointField> points(nChunks, pointField(chunk));
+        for (pointField& pts : points)
         {
-            x = point(0.3 + 0.4*u(rng), 0.3 + 0.5*u(rng), 0.15 + 0.8*u(rng));
-        }
-    }
-    List<scalarField> phi(nChunks);
-    List<vectorField> normal(nChunks);
-    List<boolList> in(nChunks);
-    const int threads = omp_get_max_threads();
-    omp_set_num_threads(4);
-    #pragma omp parallel for schedule(dynamic, 1)
-    for (label c = 0; c < nChunks; ++c)
-    {
-        surface->distance(points[c], phi[c], normal[c]);
-        surface->inside(points[c], in[c]);
-    }
-    omp_set_num_threads(threads);
-
-    label nInside = 0;
-    for (label c = 0; c < nChunks; ++c)
-    {
-        forAll(points[c], i)
-        {
-            const scalar exact = boxDistance(points[c][i]);
-            EXPECT_NEAR(phi[c][i], exact, 1e-14) << points[c][i];
-            EXPECT_NEAR(mag(normal[c][i]), 1, 1e-14) << points[c][i];
-            if (mag(exact) > 1e-12)
+            for (point& x : pts)
             {
-                EXPECT_EQ(bool(in[c][i]), exact < 0) << points[c][i];
+                x = point
+                (
+                    0.2 + 0.6*u(rng), 0.2 + 0.6*u(rng), 0.15 + 0.8*u(rng)
+                );
             }
-            nInside += in[c][i];
         }
+        const std::string dict("type triSurface; file " + file + ";");
+        const autoPtr<barrierGeometry> surface
+        (
+            readGeometry(dict, surfaces.dir())
+        );
+        ASSERT_TRUE(surface->threadSafeDistance());
+        List<scalarField> phi(nChunks);
+        List<vectorField> normal(nChunks);
+        List<boolList> in(nChunks);
+        {
+            const threadCount threads(4);
+            #pragma omp parallel for schedule(dynamic, 1)
+            for (label k = 0; k < nChunks; ++k)
+            {
+                surface->inside(points[k], in[k]);
+                surface->distance(points[k], phi[k], normal[k]);
+            }
+        }
+
+        // One thread, another geometry: the same bit for bit; inside as
+        // the analytic shape says
+        const autoPtr<barrierGeometry> serial
+        (
+            readGeometry(dict, surfaces.dir())
+        );
+        label nInside = 0;
+        for (label k = 0; k < nChunks; ++k)
+        {
+            scalarField phi1;
+            vectorField normal1;
+            boolList in1;
+            serial->distance(points[k], phi1, normal1);
+            serial->inside(points[k], in1);
+            forAll(points[k], i)
+            {
+                const point& x = points[k][i];
+                EXPECT_EQ(phi[k][i], phi1[i]) << file << " " << x;
+                EXPECT_EQ(normal[k][i], normal1[i]) << file << " " << x;
+                EXPECT_EQ(in[k][i], in1[i]) << file << " " << x;
+                const scalar exact = shapeDistance(file, x);
+                EXPECT_NEAR(phi[k][i], exact, 1e-14) << file << " " << x;
+                if (mag(exact) > 1e-12)
+                {
+                    EXPECT_EQ(bool(in[k][i]), exact < 0) << file << " " << x;
+                }
+                nInside += in[k][i];
+            }
+        }
+        // (The box fills a fifth of the points' box, the cubes 1/22)
+        EXPECT_GT(nInside, nChunks*chunk/(file == "box.stl" ? 6 : 30))
+            << file;
     }
-    // (A third of the points' box is inside the barrier)
-    EXPECT_GT(nInside, nChunks*chunk/5);
 }
 
 

@@ -28,6 +28,53 @@ inline float floatBelow(const double x)
         : f;
 }
 
+//- The cells of particles first to last - 1, clamped into the grid, as
+//  gridGeometry::cellOf gives them: in 3D in a loop of arithmetic alone,
+//  clamped as doubles, which the compiler vectorises (a non-finite
+//  position takes some cell: the step's finite check stops such a run)
+inline void cellsOf
+(
+    const Foam::gridGeometry& g,
+    const Foam::mpm3dParticles& p,
+    const Foam::label first,
+    const Foam::label last,
+    Foam::gridGeometry::index* cells
+)
+{
+    if (g.dim != 3)
+    {
+        for (Foam::label i = first; i < last; ++i)
+        {
+            cells[i - first] = g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i]);
+        }
+        return;
+    }
+    // As gridGeometry::local, axis by axis, the grid's numbers in locals
+    const double* const x = p.x[0];
+    const double* const y = p.x[1];
+    const double* const z = p.x[2];
+    const double ox = g.origin[0], oy = g.origin[1], oz = g.origin[2];
+    const double sx = g.invDx[0], sy = g.invDx[1], sz = g.invDx[2];
+    const double fx = g.offset[0], fy = g.offset[1], fz = g.offset[2];
+    const double tx = g.nCells[0] - 1, ty = g.nCells[1] - 1;
+    const double tz = g.nCells[2] - 1;
+    const Foam::gridGeometry::index nx = g.nCells[0];
+    const Foam::gridGeometry::index nxy = nx*g.nCells[1];
+    for (Foam::label i = first; i < last; ++i)
+    {
+        // Clamped, then truncated: the floor of a number >= 0 (floor
+        // itself does not vectorise where floating-point traps are kept);
+        // max(0, NaN) is 0
+        const double ci = (x[i] - ox)*sx - fx;
+        const double cj = (y[i] - oy)*sy - fy;
+        const double ck = (z[i] - oz)*sz - fz;
+        cells[i - first] =
+            Foam::gridGeometry::index(std::min(std::max(0.0, ci), tx))
+          + nx*Foam::gridGeometry::index(std::min(std::max(0.0, cj), ty))
+          + nxy*Foam::gridGeometry::index(std::min(std::max(0.0, ck), tz));
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -80,7 +127,8 @@ void Foam::particleGuard::startSearch
     // the barrier: the band bounds their distance from below
     clearance_ = guardDepth_ - 1e-6*g.hMin();
     nodeClearance_.clear();
-    if (geometry_.exactDistance())
+    // (3D grids: the screen takes the eight corners of a cell)
+    if (geometry_.exactDistance() && g.dim == 3)
     {
         nodeClearance_.assign(g.nNodes(), floatBelow(band + clearance_));
     }
@@ -194,15 +242,23 @@ bool Foam::particleGuard::mayBeDeep
     // Each corner n of the point's cell bounds phi >= phi_n - r_n: the
     // point is not deeper than the guard's depth where one corner's
     // clearance phi_n + guardDepth (less the margin) is at least r_n. The
-    // best of the eight corners, not only the nearest: particles lying
-    // against a face pass the nearest corner's bound but often not a
-    // farther one on their side of the face
+    // best of the eight corners, not only the nearest: a particle lying
+    // against a face is often too far from its nearest corner to be
+    // cleared by it, but near enough to another corner on its side
     const double xyz[3] = {x, y, z};
     gridGeometry::index ijk[3];
     double r2[3][2];
     for (int d = 0; d < 3; ++d)
     {
-        ijk[d] = g.cellDir(d, xyz[d]);
+        // Clamped before the cast (any node's bound holds)
+        ijk[d] = gridGeometry::index
+        (
+            std::min
+            (
+                std::max(std::floor(g.local(d, xyz[d])), 0.0),
+                double(g.nCells[d] - 1)
+            )
+        );
         r2[d][0] = sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
         r2[d][1] = sqr(xyz[d] - g.nodeCoord(d, ijk[d] + 1));
     }
@@ -240,12 +296,17 @@ void Foam::particleGuard::markEntered
     {
         const label first = c*chunk;
         const label last = std::min(n, first + chunk);
+        // The cells first (cellsOf), then the lists, reserved: a
+        // terrain's chunks keep most particles
+        gridGeometry::index cells[chunk];
+        cellsOf(g, p, first, last, cells);
         DynamicList<label>& ids = inside[c];
-        DynamicField<point> pts;
+        ids.setCapacity(last - first);
+        DynamicField<point> pts(last - first);
         for (label i = first; i < last; ++i)
         {
             const double x = p.x[0][i], y = p.x[1][i], z = p.x[2][i];
-            if (nearCell_[g.cellOf(x, y, z)] && mayBeDeep(g, x, y, z))
+            if (nearCell_[cells[i - first]] && mayBeDeep(g, x, y, z))
             {
                 ids.append(i);
                 pts.append(point(x, y, z));
@@ -255,8 +316,9 @@ void Foam::particleGuard::markEntered
         {
             continue;
         }
+        // (This loop is the parallel one: not guardInside's chunks)
         boolList in;
-        guardInside(pts, in);
+        insideBeyondDepth(pts, in);
         label m = 0;
         forAll(ids, k)
         {

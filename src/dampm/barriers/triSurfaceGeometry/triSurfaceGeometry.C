@@ -137,16 +137,16 @@ void Foam::barrierGeometries::triSurfaceGeometry::buildSearch() const
     // OpenFOAM builds the octree, its octants' inside/outside types and
     // the surface's addressing on first use: built here, once, queries only
     // read them and may run on several threads at once. (The addressing is
-    // what the octree's inside test reads: treeDataPrimitivePatch::
-    // getVolumeType)
+    // what a triSurface's inside test reads, by face, edge or vertex:
+    // triSurfaceTools::surfaceSide)
     const triSurface& surf = *surface_;
     surf.localFaces();
-    surf.meshPoints();
+    surf.localPoints();
     surf.edges();
     surf.faceEdges();
     surf.edgeFaces();
+    surf.pointEdges();
     surf.faceNormals();
-    surf.pointNormals();
     search_->calcInside(pointField(1, bounds().centre()));
 }
 
