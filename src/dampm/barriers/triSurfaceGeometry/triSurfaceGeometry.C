@@ -147,7 +147,10 @@ void Foam::barrierGeometries::triSurfaceGeometry::buildSearch() const
     surf.edgeFaces();
     surf.pointEdges();
     surf.faceNormals();
-    search_->calcInside(pointField(1, bounds().centre()));
+    // The octants' types, by a point in the octree's own box (calcInside
+    // answers a point outside it without them)
+    const indexedOctree<treeDataTriSurface>& tree = search_->tree();
+    tree.getVolumeType(tree.bb().centre());
 }
 
 
