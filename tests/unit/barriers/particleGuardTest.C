@@ -11,9 +11,10 @@ Description
     geometry on a grid of 0.1 x 0.15 x 0.2 m cells (barrierProbe.H):
     - box from (0.42 0.3 0.2) to (0.58 0.9 0.8): a particle entering
       through a face is put back on that face, with its velocity into it
-      removed (slip); and a wall thinner than the grid's nodes (no node
+      removed (slip); a wall thinner than the grid's nodes (no node
       inside, 4 cm between the node planes 0.5 and 0.6) holds by the guard
-      alone;
+      alone; and particles lying against a face, outside, are cleared by
+      the screen (none tested exactly);
     - inclined plane (normal (1 -2 2)): a particle that enters in a step is
       put back on the plane, at its end point projected along n (to 2^-30
       of its move: the bisection), and loses its velocity into the plane by
@@ -163,6 +164,34 @@ TEST(particleGuard, ParticlesThatDoNotEnterAreLeftAlone)
         EXPECT_EQ(x, move.second);
         EXPECT_EQ(v, u);
         EXPECT_EQ(F, vector(Zero));
+    }
+}
+
+
+// The screen: particles lying 0.03 m above the box's top face (a node
+// plane, z = 0.8; cells 0.2 m high) and sliding along it are cleared by the
+// corners of their cell 0.2 m above the face, none tested exactly (their
+// nearest node, on the face, would clear none); the same particles 0.03 m
+// below the face, inside, are all tested
+TEST(particleGuard, ScreenClearsParticlesLyingAgainstAFace)
+{
+    barrierProbe probe(boxWall);
+    constexpr label n = 400;
+    for (const scalar dz : {0.03, -0.03})
+    {
+        pointField x0(n), x(n);
+        vectorField u(n, vector(5, 0, 0));
+        for (label i = 0; i < n; ++i)
+        {
+            x0[i] = point
+            (
+                0.43 + 0.13*(i%20)/19, 0.31 + 0.58*(i/20)/19, 0.8 + dz
+            );
+            x[i] = x0[i] + vector(0.005, 0, 0);
+        }
+        vector F;
+        EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
+        EXPECT_EQ(probe.wall().guard().nTested(), dz > 0 ? 0 : n) << dz;
     }
 }
 

@@ -93,6 +93,7 @@ Foam::particleGuard::particleGuard
     nearCellDistance_(0),
     clearance_(0),
     reached_(true),
+    nTested_(0),
     guardDepth_(0),
     force_(Zero)
 {}
@@ -290,6 +291,7 @@ void Foam::particleGuard::markEntered
     const label n = p.n;
     const label nChunks = (n + chunk - 1)/chunk;
     List<DynamicList<label>> inside(nChunks);
+    labelList tested(nChunks, Zero);
     #pragma omp parallel for schedule(dynamic) \
         if (geometry_.threadSafeDistance())
     for (label c = 0; c < nChunks; ++c)
@@ -312,6 +314,7 @@ void Foam::particleGuard::markEntered
                 pts.append(point(x, y, z));
             }
         }
+        tested[c] = ids.size();
         if (ids.empty())
         {
             continue;
@@ -333,6 +336,7 @@ void Foam::particleGuard::markEntered
     {
         candidates_.insert(candidates_.end(), ids.begin(), ids.end());
     }
+    nTested_ = sum(tested);
 }
 
 
@@ -365,6 +369,7 @@ Foam::label Foam::particleGuard::stopEntries
     // (beyond the guard's depth), then those of them that were outside at
     // the start
     candidates_.clear();
+    nTested_ = 0;
     if (reached_)
     {
         markEntered(g, p);
