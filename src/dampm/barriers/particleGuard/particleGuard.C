@@ -28,53 +28,6 @@ inline float floatBelow(const double x)
         : f;
 }
 
-//- The cells of particles first to last - 1, clamped into the grid, as
-//  gridGeometry::cellOf gives them: in 3D in a loop of arithmetic alone,
-//  clamped as doubles, which the compiler vectorises (a non-finite
-//  position takes some cell: the step's finite check stops such a run)
-inline void cellsOf
-(
-    const Foam::gridGeometry& g,
-    const Foam::mpm3dParticles& p,
-    const Foam::label first,
-    const Foam::label last,
-    Foam::gridGeometry::index* cells
-)
-{
-    if (g.dim != 3)
-    {
-        for (Foam::label i = first; i < last; ++i)
-        {
-            cells[i - first] = g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i]);
-        }
-        return;
-    }
-    // As gridGeometry::local, axis by axis, the grid's numbers in locals
-    const double* const x = p.x[0];
-    const double* const y = p.x[1];
-    const double* const z = p.x[2];
-    const double ox = g.origin[0], oy = g.origin[1], oz = g.origin[2];
-    const double sx = g.invDx[0], sy = g.invDx[1], sz = g.invDx[2];
-    const double fx = g.offset[0], fy = g.offset[1], fz = g.offset[2];
-    const double tx = g.nCells[0] - 1, ty = g.nCells[1] - 1;
-    const double tz = g.nCells[2] - 1;
-    const Foam::gridGeometry::index nx = g.nCells[0];
-    const Foam::gridGeometry::index nxy = nx*g.nCells[1];
-    for (Foam::label i = first; i < last; ++i)
-    {
-        // Clamped, then truncated: the floor of a number >= 0 (floor
-        // itself does not vectorise where floating-point traps are kept);
-        // max(0, NaN) is 0
-        const double ci = (x[i] - ox)*sx - fx;
-        const double cj = (y[i] - oy)*sy - fy;
-        const double ck = (z[i] - oz)*sz - fz;
-        cells[i - first] =
-            Foam::gridGeometry::index(std::min(std::max(0.0, ci), tx))
-          + nx*Foam::gridGeometry::index(std::min(std::max(0.0, cj), ty))
-          + nxy*Foam::gridGeometry::index(std::min(std::max(0.0, ck), tz));
-    }
-}
-
 } // End anonymous namespace
 
 
@@ -251,15 +204,8 @@ bool Foam::particleGuard::mayBeDeep
     double r2[3][2];
     for (int d = 0; d < 3; ++d)
     {
-        // Clamped before the cast (any node's bound holds)
-        ijk[d] = gridGeometry::index
-        (
-            std::min
-            (
-                std::max(std::floor(g.local(d, xyz[d])), 0.0),
-                double(g.nCells[d] - 1)
-            )
-        );
+        // (Clamped into the grid: any node's bound holds)
+        ijk[d] = g.cellDir(d, xyz[d]);
         r2[d][0] = sqr(xyz[d] - g.nodeCoord(d, ijk[d]));
         r2[d][1] = sqr(xyz[d] - g.nodeCoord(d, ijk[d] + 1));
     }
@@ -298,10 +244,13 @@ void Foam::particleGuard::markEntered
     {
         const label first = c*chunk;
         const label last = std::min(n, first + chunk);
-        // The cells first (cellsOf), then the lists, reserved: a
-        // terrain's chunks keep most particles
+        // The cells first, in a loop of arithmetic alone (it vectorises),
+        // then the lists, reserved: a terrain's chunks keep most particles
         gridGeometry::index cells[chunk];
-        cellsOf(g, p, first, last, cells);
+        for (label i = first; i < last; ++i)
+        {
+            cells[i - first] = g.cellOf(p.x[0][i], p.x[1][i], p.x[2][i]);
+        }
         DynamicList<label>& ids = inside[c];
         ids.setCapacity(last - first);
         DynamicField<point> pts(last - first);
