@@ -120,6 +120,9 @@ int main(int argc, char *argv[])
         progress.update(Info, runTime, timers);
     }
 
+    // The last time directory, written in the background, finished
+    timers.run(stepTimers::IO, [&]{ runTime.finishWrites(); });
+
     // The event's hazard maps as rasters, once, at the end
     if (eventMaps)
     {

@@ -100,6 +100,26 @@ def formats(c, ref, times):
     return formatVariant(c, ref, times, "asciiCloud", {"cloudFormat": "ascii"}, "ascii")
 
 
+def foreground(c, ref, times):
+    """The reference's time directories are written by the background
+    writer (writeInBackground's default); written by the solver's own thread
+    (writeInBackground no) they hold the same files, byte for byte, with the
+    same hard links (a static field linked from its first write)."""
+    run = fc.newRun("foreground", entries={"writeInBackground": "no"})
+    status, out = c.run(run)
+    fc.checkAccepted("foreground", status, out)
+    check(fc.timeDirs(run) == times, "foreground: the time directories %s" % times)
+    for t in times:
+        listed = [sorted(os.path.relpath(os.path.join(r, f), os.path.join(case, t))
+                         for r, _, fs in os.walk(os.path.join(case, t)) for f in fs)
+                  for case in (ref, run)]
+        check(listed[0] == listed[1], "foreground: the files of %s are the background's" % t)
+        fc.sameFiles(ref, run, t, listed[0], "foreground")
+        links = [[os.stat(os.path.join(case, t, f)).st_nlink for f in listed[0]] for case in (ref, run)]
+        check(links[0] == links[1], "foreground: the links of %s are the background's (%s)"
+              % (t, [f for f, a, b in zip(listed[0], *links) if a != b] or "all"))
+
+
 def killed(c, times, nKills=8, seed=5):
     """SIGKILL at random moments of a run that writes every few steps and
     keeps 2 time directories (purgeWrite), restarted after every kill."""
@@ -208,8 +228,9 @@ def corruptClouds(c, ref, times):
 
 
 def fullDisk(c, ref, times):
-    """The case on a file system too small for all its time directories (a
-    tmpfs; where mounting is not allowed, a file-size limit): the run stops
+    """The case and its log on a file system too small for all its time
+    directories (a tmpfs; where mounting is not allowed, a file-size limit,
+    the output in a pipe): the run stops
     with a FatalError naming the last complete time directory, which a
     restart elsewhere continues into the same answer."""
     import resource
@@ -232,8 +253,27 @@ def fullDisk(c, ref, times):
         biggest = max(os.path.getsize(os.path.join(r, f))
                       for r, _, fs in os.walk(os.path.join(ref, times[2])) for f in fs)
         limit = lambda: resource.setrlimit(resource.RLIMIT_FSIZE, (biggest - 1, biggest - 1))
-    r = subprocess.run([c.solver, "-case", case], capture_output=True, preexec_fn=limit)
-    status, out = r.returncode, (r.stdout + r.stderr).decode("utf-8", "replace")
+    if mounted:
+        # The whole output on the full disk, as runApplication writes it:
+        # writes of the log that fail must not end in a signal (the log
+        # may have no byte left for the message)
+        with open(os.path.join(case, "log." + c.solver), "w") as log:
+            status = subprocess.run([c.solver, "-case", case], stdout=log, stderr=subprocess.STDOUT).returncode
+        check(status > 0, "fullDisk, the log on the full disk too: stops with an error exit code (%s)"
+              % fc.describeStatus(status))
+        for d in os.listdir(case):
+            if d not in ("system", "constant"):
+                shutil.rmtree(os.path.join(case, d)) if os.path.isdir(os.path.join(case, d)) \
+                    else os.remove(os.path.join(case, d))
+        # Again, the log there, the errors in a pipe
+        logPath = os.path.join(case, "log." + c.solver)
+        with open(logPath, "w") as log:
+            r = subprocess.run([c.solver, "-case", case], stdout=log, stderr=subprocess.PIPE)
+        status = r.returncode
+        out = open(logPath, errors="replace").read() + r.stderr.decode("utf-8", "replace")
+    else:
+        r = subprocess.run([c.solver, "-case", case], capture_output=True, preexec_fn=limit)
+        status, out = r.returncode, (r.stdout + r.stderr).decode("utf-8", "replace")
     how = "a tmpfs of %d kB" % (room // 1024) if mounted else "a file-size limit"
     fc.checkRefused("fullDisk (%s)" % how, status, out,
                     [("cannot write time directory", "cannot write")], None)

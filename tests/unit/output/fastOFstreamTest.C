@@ -25,6 +25,7 @@ Description
 
 #include "scratchDir.H"
 #include "fastOFstream.H"
+#include "OFstream.H"
 #include "exactPrecision.H"
 #include "scalarList.H"
 #include "vectorField.H"

@@ -18,6 +18,7 @@ License
 #include "Pstream.H"
 #include "exactPrecision.H"
 #include "errorsThrown.H"
+#include "mpmTimeControls.H"
 
 #include <fstream>
 #include <zlib.h>
@@ -331,7 +332,7 @@ bool Foam::mpmTime::writeRecord() const
             IOstream::UNCOMPRESSED,
             true
         )
-     && whole(record.objectPath());
+     && (backgroundWriter::collecting() || whole(record.objectPath()));
 }
 
 
@@ -347,8 +348,84 @@ void Foam::mpmTime::purgeOldTimes() const
     }
     while (previousWriteTimes_.size() > purgeWrite_)
     {
-        rmDir(path()/previousWriteTimes_.pop());
+        const fileName old(path()/previousWriteTimes_.pop());
+        backgroundWriter* collector = backgroundWriter::collecting();
+        if (collector)
+        {
+            collector->add
+            ({backgroundWriter::operation::kind::removeDir, old, ""});
+        }
+        else
+        {
+            rmDir(old);
+        }
     }
+}
+
+
+void Foam::mpmTime::writeInBackground
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    // Formatted here, written by the writer's thread in the order
+    // collected: the record last, and the purge after it
+    string failure;
+    bool collected = false;
+    {
+        const backgroundWriter::collection collecting(*writer_);
+        try
+        {
+            const errorsThrown throwing;
+            collected =
+                writeTimeDict()
+             && objectRegistry::writeObject(fmt, ver, cmp, valid)
+             && writeRecord();
+        }
+        catch (const IOerror& e)
+        {
+            failure = e.ioFileName() + ": " + e.message();
+        }
+        catch (const error& e)
+        {
+            failure = e.message();
+        }
+        if (collected)
+        {
+            purgeOldTimes();
+            writer_->submit();
+            writing_ = timeName();
+        }
+        else if (!writer_->collectedFailure().empty())
+        {
+            // A file written as it came: the C library's reason
+            failure = writer_->collectedFailure();
+        }
+    }
+    if (!collected)
+    {
+        cannotWrite(timePath(), failure);
+    }
+}
+
+
+void Foam::mpmTime::cannotWrite
+(
+    const fileName& dir,
+    const std::string& why
+) const
+{
+    FatalErrorInFunction
+        << "cannot write time directory " << dir << ": "
+        << (why.empty() ? "a file could not be written" : why.c_str())
+        << " (disk full, or the directory not writable?). The run stops;"
+        << " the last complete time directory is "
+        << (lastComplete_.empty() ? word("none") : lastComplete_)
+        << ", and a restart (startFrom latestTime) starts from it"
+        << exit(FatalError);
 }
 
 
@@ -372,6 +449,23 @@ Foam::mpmTime::mpmTime
         catchStopSignals();
         checkStartTime();
     }
+    if
+    (
+        solver && !Pstream::parRun()
+     && isA<backgroundFileOperation>(fileHandler())
+     && mpmTimeControls::writeInBackground(controlDict())
+    )
+    {
+        writer_.reset(new backgroundWriter());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::mpmTime::~mpmTime()
+{
+    finishWrites();
 }
 
 
@@ -607,9 +701,18 @@ bool Foam::mpmTime::writeObject
         return false;
     }
 
+    // The write before, written in the background, checked first
+    finishWrites();
+
     // Written again (a restart from before it): incomplete until the record
     const fileName dir(timePath());
     rm(dir/"uniform"/recordName);
+
+    if (writer_)
+    {
+        writeInBackground(fmt, ver, cmp, valid);
+        return true;
+    }
 
     // uniform/time first: files at least as new as it are this write's.
     // OpenFOAM's streams end the process when a write fails: caught, to
@@ -638,27 +741,14 @@ bool Foam::mpmTime::writeObject
 
     if (!written)
     {
-        FatalErrorInFunction
-            << "cannot write time directory " << dir << ": ";
-        if (broken.size())
-        {
-            FatalError<< broken.size() << " file(s) cut short, first "
-                << broken.first();
-        }
-        else if (failure.size())
-        {
-            FatalError<< failure.c_str();
-        }
-        else
-        {
-            FatalError<< "a file could not be written";
-        }
-        FatalError
-            << " (disk full, or the directory not writable?). The run stops;"
-            << " the last complete time directory is "
-            << (lastComplete_.empty() ? word("none") : lastComplete_)
-            << ", and a restart (startFrom latestTime) starts from it"
-            << exit(FatalError);
+        cannotWrite
+        (
+            dir,
+            broken.size()
+          ? Foam::name(broken.size()) + " file(s) cut short, first "
+          + broken.first()
+          : failure
+        );
     }
     lastComplete_ = timeName();
     // Decomposed: older times go only once every processor has this one (a
@@ -669,6 +759,31 @@ bool Foam::mpmTime::writeObject
     }
     purgeOldTimes();
     return true;
+}
+
+
+const Foam::word& Foam::mpmTime::lastComplete() const
+{
+    finishWrites();
+    return lastComplete_;
+}
+
+
+void Foam::mpmTime::finishWrites() const
+{
+    if (!writer_ || writing_.empty())
+    {
+        return;
+    }
+    const std::string failure = writer_->wait();
+    const fileName dir(path()/writing_);
+    const word written(writing_);
+    writing_.clear();
+    if (!failure.empty())
+    {
+        cannotWrite(dir, failure);
+    }
+    lastComplete_ = written;
 }
 
 

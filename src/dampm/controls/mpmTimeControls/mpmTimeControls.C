@@ -164,6 +164,33 @@ void Foam::mpmTimeControls::sameLatestTime
 }
 
 
+bool Foam::mpmTimeControls::writeInBackground(const dictionary& dict)
+{
+    const word key("writeInBackground");
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return true;
+    }
+    ITstream& is = e->stream();
+    const token t(is);
+    const Switch value
+    (
+        t.isWord() ? Switch(t.wordToken(), true)
+      : t.isBool() ? Switch(t.boolToken())
+      : Switch(Switch::INVALID)
+    );
+    if (!value.valid() || !is.eof())
+    {
+        FatalIOErrorInFunction(is)
+            << key << " " << e->stream().toString().c_str() << " is invalid;"
+            << " allowed: yes (the default) or no (on/off, true/false)"
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
 void Foam::mpmTimeControls::checkControlDict
 (
     const fileName& caseDir,
@@ -405,6 +432,8 @@ void Foam::mpmTimeControls::checkControlDict
             << " writeControl " << writeControl << "; allowed: "
             << allowed.c_str() << exit(FatalIOError);
     }
+
+    writeInBackground(dict);
 
     // The run: endTime after the start
     if (run && toEndTime && !(endTime > start))

@@ -10,6 +10,7 @@ License
 
 #include "fastOFstream.H"
 #include "Time.H"
+#include "OFstream.H"
 #include "OSspecific.H"
 #include <algorithm>
 #include <charconv>
@@ -45,9 +46,6 @@ constexpr std::size_t tapeSize = 1 << 22;
 
 // Elements of a long list formatted by one thread (writeLines)
 constexpr Foam::label linesChunk = 1 << 14;
-
-// Bytes handed to the stream buffer at once (see put)
-constexpr std::streamsize writeSize = 1 << 18;
 
 // Tape entries that stand for the next number: a double, or an integer
 // (its bits in the number's place)
@@ -167,15 +165,14 @@ void Foam::fastOFstream::drain()
 void Foam::fastOFstream::put(const char* data, const std::streamsize n)
 {
     // The stream buffer itself: no sentry, no state check per character
-    // (OFstream's stream: this class's stdStream writes the tape first).
-    // In pieces of at most writeSize: the buffer hands a longer text to one
-    // write(2), and on this platform a write(2) of 2 MB or more into a new
-    // file took 20 times as long per byte as one of 1 MB (60 MB: 350-470 ms
-    // against 15-19 ms)
-    std::ostream& os = OFstream::stdStream();
-    for (std::streamsize done = 0; done < n; done += writeSize)
+    // (this class's stdStream writes the tape first). In pieces: a file's
+    // buffer hands a longer text to one write(2) (backgroundWriter's
+    // pieceSize says why not)
+    std::ostream& os = OSstream::stdStream();
+    const std::streamsize piece = backgroundWriter::pieceSize;
+    for (std::streamsize done = 0; done < n; done += piece)
     {
-        const std::streamsize m = std::min(writeSize, n - done);
+        const std::streamsize m = std::min(piece, n - done);
         if (os.rdbuf()->sputn(data + done, m) != m)
         {
             os.setstate(std::ios::badbit);
@@ -183,6 +180,146 @@ void Foam::fastOFstream::put(const char* data, const std::streamsize n)
             return;
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::Detail::collectBuffer::collectBuffer(const std::string& path)
+:
+    path_(path),
+    fd_(-1),
+    toFile_(false),
+    error_(0)
+{}
+
+
+Foam::Detail::collectBuffer::~collectBuffer()
+{
+    if (fd_ >= 0)
+    {
+        backgroundWriter::closeFile(fd_, path_, false);
+    }
+}
+
+
+Foam::Detail::fastOFstreamTarget::fastOFstreamTarget
+(
+    const fileName& pathname,
+    const IOstream::compressionType compression
+)
+:
+    collector_
+    (
+        compression == IOstream::UNCOMPRESSED
+      ? backgroundWriter::collecting()
+      : nullptr
+    ),
+    buffer_(pathname),
+    memory_(&buffer_)
+{
+    if (!collector_)
+    {
+        mkDir(pathname.path());
+        file_.reset
+        (
+            new OFstream
+            (
+                pathname, IOstream::ASCII, IOstream::currentVersion,
+                compression
+            )
+        );
+    }
+}
+
+
+Foam::Detail::fastOFstreamTarget::~fastOFstreamTarget()
+{}
+
+
+bool Foam::Detail::collectBuffer::writeOut
+(
+    const char* s,
+    const std::streamsize n
+)
+{
+    if (!toFile_)
+    {
+        toFile_ = true;
+        mkDir(fileName(path_).path());
+        fd_ = backgroundWriter::createFile(path_);
+    }
+    const bool ok =
+        fd_ >= 0
+     && backgroundWriter::writeAll(fd_, bytes_.data(), bytes_.size())
+     && backgroundWriter::writeAll(fd_, s, n);
+    bytes_.clear();
+    if (!ok)
+    {
+        error_ = errno;
+    }
+    return ok;
+}
+
+
+Foam::Detail::collectBuffer::int_type
+Foam::Detail::collectBuffer::overflow(int_type c)
+{
+    if (traits_type::eq_int_type(c, traits_type::eof()))
+    {
+        return traits_type::not_eof(c);
+    }
+    const char ch = traits_type::to_char_type(c);
+    return xsputn(&ch, 1) == 1 ? c : traits_type::eof();
+}
+
+
+std::streamsize Foam::Detail::collectBuffer::xsputn
+(
+    const char* s,
+    const std::streamsize n
+)
+{
+    // Collected up to one piece; more goes to the file as it comes
+    if (error_)
+    {
+        return 0;
+    }
+    if (bytes_.size() + n <= std::size_t(backgroundWriter::pieceSize))
+    {
+        bytes_.append(s, n);
+        return n;
+    }
+    return writeOut(s, n) ? n : 0;
+}
+
+
+int Foam::Detail::collectBuffer::sync()
+{
+    return !toFile_ || bytes_.empty() || writeOut(nullptr, 0) ? 0 : -1;
+}
+
+
+std::string Foam::Detail::collectBuffer::close()
+{
+    if (fd_ < 0)
+    {
+        return error_ ? std::strerror(error_) : "";
+    }
+    const bool written = !error_ && sync() == 0;
+    const int fd = fd_;
+    fd_ = -1;
+    if (!backgroundWriter::closeFile(fd, path_, written))
+    {
+        return std::strerror(error_ ? error_ : errno);
+    }
+    return "";
+}
+
+
+std::ostream& Foam::Detail::fastOFstreamTarget::target()
+{
+    return file_ ? file_->stdStream() : memory_;
 }
 
 
@@ -201,10 +338,7 @@ bool Foam::fastOFstream::writeObject
     {
         const_cast<regIOobject&>(io).instance() = time.timeName();
     }
-    const fileName file(io.objectPath());
-    mkDir(file.path());
-
-    fastOFstream os(file, fmt, ver, cmp);
+    fastOFstream os(io.objectPath(), fmt, ver, cmp);
     const bool ok = os.good() && io.writeHeader(os) && io.writeData(os);
     IOobject::writeEndDivider(os);
     os.flush();
@@ -214,9 +348,51 @@ bool Foam::fastOFstream::writeObject
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::fastOFstream::fastOFstream
+(
+    const fileName& pathname,
+    streamFormat format,
+    versionNumber version,
+    compressionType compression
+)
+:
+    Detail::fastOFstreamTarget(pathname, compression),
+    OSstream(target(), pathname, format, version, compression)
+{
+    // As OFstream's
+    setClosed();
+    setState(target().rdstate());
+    if (good())
+    {
+        setOpened();
+    }
+    else
+    {
+        setBad();
+    }
+    lineNumber_ = 1;
+}
+
+
 Foam::fastOFstream::~fastOFstream()
 {
     drain();
+    if (!collector_ || collector_ != backgroundWriter::collecting())
+    {
+        return;
+    }
+    typedef backgroundWriter::operation::kind kind;
+    if (!buffer_.toFile())
+    {
+        collector_->add({kind::writeFile, name(), std::move(buffer_.bytes())});
+        return;
+    }
+    // Written as it came: closed now; what failed stops the write time
+    const std::string why = buffer_.close();
+    if (!why.empty())
+    {
+        collector_->add({kind::failure, name(), why});
+    }
 }
 
 
@@ -248,7 +424,7 @@ Foam::Ostream& Foam::fastOFstream::write(const doubleScalar val)
 {
     if (format() == BINARY)
     {
-        return OFstream::write(val);
+        return OSstream::write(val);
     }
     if (plainZero(val))
     {
@@ -349,28 +525,28 @@ Foam::Ostream& Foam::fastOFstream::write(const floatScalar val)
 bool Foam::fastOFstream::write(const token& tok)
 {
     drain();
-    return OFstream::write(tok);
+    return OSstream::write(tok);
 }
 
 
 Foam::Ostream& Foam::fastOFstream::write(const char* str)
 {
     drain();
-    return OFstream::write(str);
+    return OSstream::write(str);
 }
 
 
 Foam::Ostream& Foam::fastOFstream::write(const word& str)
 {
     drain();
-    return OFstream::write(str);
+    return OSstream::write(str);
 }
 
 
 Foam::Ostream& Foam::fastOFstream::write(const string& str)
 {
     drain();
-    return OFstream::write(str);
+    return OSstream::write(str);
 }
 
 
@@ -381,7 +557,7 @@ Foam::Ostream& Foam::fastOFstream::writeQuoted
 )
 {
     drain();
-    return OFstream::writeQuoted(str, quoted);
+    return OSstream::writeQuoted(str, quoted);
 }
 
 
@@ -390,7 +566,7 @@ Foam::Ostream& Foam::fastOFstream::write(const int32_t val)
     if (format() == BINARY)
     {
         drain();
-        return OFstream::write(val);
+        return OSstream::write(val);
     }
     return writeInteger(val);
 }
@@ -401,7 +577,7 @@ Foam::Ostream& Foam::fastOFstream::write(const int64_t val)
     if (format() == BINARY)
     {
         drain();
-        return OFstream::write(val);
+        return OSstream::write(val);
     }
     return writeInteger(val);
 }
@@ -414,7 +590,7 @@ Foam::Ostream& Foam::fastOFstream::write
 )
 {
     drain();
-    return OFstream::write(data, count);
+    return OSstream::write(data, count);
 }
 
 
@@ -434,49 +610,49 @@ Foam::Ostream& Foam::fastOFstream::writeRaw
 bool Foam::fastOFstream::beginRawWrite(std::streamsize count)
 {
     drain();
-    return OFstream::beginRawWrite(count);
+    return OSstream::beginRawWrite(count);
 }
 
 
 bool Foam::fastOFstream::endRawWrite()
 {
     drain();
-    return OFstream::endRawWrite();
+    return OSstream::endRawWrite();
 }
 
 
 void Foam::fastOFstream::indent()
 {
     drain();
-    OFstream::indent();
+    OSstream::indent();
 }
 
 
 void Foam::fastOFstream::flush()
 {
     drain();
-    OFstream::flush();
+    OSstream::flush();
 }
 
 
 void Foam::fastOFstream::endl()
 {
     drain();
-    OFstream::endl();
+    OSstream::endl();
 }
 
 
 int Foam::fastOFstream::precision(const int p)
 {
     drain();
-    return OFstream::precision(p);
+    return OSstream::precision(p);
 }
 
 
 std::ostream& Foam::fastOFstream::stdStream()
 {
     drain();
-    return OFstream::stdStream();
+    return OSstream::stdStream();
 }
 
 

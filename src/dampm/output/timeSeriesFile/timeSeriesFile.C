@@ -9,7 +9,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "timeSeriesFile.H"
-#include "fastOFstream.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -40,12 +39,10 @@ Foam::timeSeriesFile::timeSeriesFile
     {
         return;
     }
-    const fileName dir = path_.path();
-    mkDir(dir);
     os_.reset(new fastOFstream(path_));
     os_->precision(16);
 
-    OFstream& os = *os_;
+    fastOFstream& os = *os_;
     os  << "# " << name << ": " << file << nl;
     for (const word& line : description)
     {

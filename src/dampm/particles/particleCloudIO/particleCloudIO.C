@@ -72,7 +72,6 @@ bool Foam::particleCloudIO::writeCloudProperties() const
     (
         fileIO("cloudProperties", "uniform"/cloud::prefix/this->name())
     );
-    mkDir(io.path());
     fastOFstream os(io.objectPath(), IOstream::ASCII);
     io.writeHeader(os, localIOdictionary::typeName);
     os.writeEntry("geometry", word("positions"));
@@ -108,7 +107,6 @@ bool Foam::particleCloudIO::writePositions
 ) const
 {
     const IOobject io(fileIO("positions", cloud::prefix/this->name()));
-    mkDir(io.path());
     fastOFstream os(io.objectPath(), fmt);
     io.writeHeader(os, "Cloud<passiveParticle>");
 

@@ -1,0 +1,320 @@
+/*---------------------------------------------------------------------------*\
+  dampm | Material Point Method for landslide run-out and barrier impact
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 dampm authors
+-------------------------------------------------------------------------------
+License
+    This file is part of dampm, distributed under GPL-3.0-or-later.
+
+Description
+    backgroundWriter: a collected write time reaches the disk only once it
+    is handed over, in the order collected (files in new directories, a
+    fastOFstream's bytes as it writes them to a file, links, removals); the
+    first failure stops the rest and names the file and the reason, and a
+    file that did not fit is removed; a process that exits finishes the
+    write time handed over. A fastOFstream's file of more than one piece
+    is written as it comes, the same bytes, and its failure is the
+    collection's.
+
+\*---------------------------------------------------------------------------*/
+
+#include "scratchDir.H"
+#include "backgroundWriter.H"
+#include "fastOFstream.H"
+#include "OSspecific.H"
+#include "scalarList.H"
+#include <gtest/gtest.h>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+typedef backgroundWriter::operation::kind kind;
+
+std::string contents(const fileName& file)
+{
+    std::ifstream is(file);
+    std::stringstream text;
+    text << is.rdbuf();
+    return text.str();
+}
+
+ino_t inode(const fileName& file)
+{
+    struct stat st;
+    return ::stat(file.c_str(), &st) == 0 ? st.st_ino : 0;
+}
+
+//- What a fastOFstream writes of a few numbers and words
+void writeSome(Ostream& os)
+{
+    os  << "numbers" << token::SPACE << 0.1 << token::SPACE << -2.5e-300
+        << nl << labelList({1, 2, 3}) << nl;
+}
+
+//- With a file-size limit of 64 kB (as a full disk): does a file of 1 MB
+//  fail, named with the reason, removed, the file before it written?
+bool writeBeyondAFileSizeLimit(const fileName& dir)
+{
+    const rlim_t limit = 1 << 16;
+    const rlimit lim{limit, limit};
+    ::setrlimit(RLIMIT_FSIZE, &lim);
+    std::signal(SIGXFSZ, SIG_IGN);
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        writer.add({kind::writeFile, dir/"small", "fits"});
+        writer.add({kind::writeFile, dir/"big", std::string(1 << 20, 'x')});
+        writer.submit();
+    }
+    const std::string failure = writer.wait();
+    return
+        failure.find(dir/"big") != std::string::npos
+     && failure.find("File too large") != std::string::npos
+     && !exists(dir/"big") && isFile(dir/"small");
+}
+
+//- A list of n numbers written to os (about 20 bytes each)
+void writeNumbers(Ostream& os, const label n)
+{
+    scalarList values(n);
+    forAll(values, i)
+    {
+        values[i] = 1.0/(i + 3);
+    }
+    fastOFstream::writeList(os, values);
+    os  << nl;
+}
+
+//- With a file-size limit of 64 kB: does a fastOFstream of 1 MB,
+//  collected, go bad, with its failure (named, the reason) collected and
+//  handed over, and the file removed?
+bool collectBeyondAFileSizeLimit(const fileName& dir)
+{
+    const rlim_t limit = 1 << 16;
+    const rlimit lim{limit, limit};
+    ::setrlimit(RLIMIT_FSIZE, &lim);
+    std::signal(SIGXFSZ, SIG_IGN);
+    backgroundWriter writer;
+    bool bad = false;
+    std::string collected;
+    {
+        const backgroundWriter::collection collecting(writer);
+        try
+        {
+            fastOFstream os(dir/"big");
+            writeNumbers(os, 50000);
+            os.flush();
+            bad = !os.good();
+        }
+        catch (const Foam::error&)
+        {
+            // (the list's writer checks the stream: the tests throw)
+            bad = true;
+        }
+        collected = writer.collectedFailure();
+        writer.submit();
+    }
+    const std::string failure = writer.wait();
+    return
+        bad && !collected.empty() && failure == collected
+     && failure.find(dir/"big") != std::string::npos
+     && failure.find("File too large") != std::string::npos
+     && !exists(dir/"big");
+}
+
+//- Hand nFiles files and a record over, then exit with code
+void handOverAndExit
+(
+    const fileName& dir,
+    const label nFiles,
+    const std::string& bytes,
+    const int code
+)
+{
+    // Never destroyed: only the exit waits for it
+    backgroundWriter* writer = new backgroundWriter();
+    {
+        const backgroundWriter::collection collecting(*writer);
+        for (label i = 0; i < nFiles; ++i)
+        {
+            writer->add({kind::writeFile, dir/"d"/Foam::name(i), bytes});
+        }
+        writer->add({kind::writeFile, dir/"record", "last"});
+        writer->submit();
+    }
+    std::exit(code);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(backgroundWriter, WritesACollectionInOrderOnceHandedOver)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir/"old"/"sub");
+    std::ofstream(dir/"old"/"sub"/"f") << "old";
+    std::ofstream(dir/"stale") << "stale";
+
+    // The same bytes as a file written now
+    {
+        fastOFstream os(dir/"direct");
+        writeSome(os);
+    }
+
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        EXPECT_EQ(backgroundWriter::collecting(), &writer);
+        {
+            fastOFstream os(dir/"a"/"b"/"collected");
+            writeSome(os);
+        }
+        writer.add({kind::writeFile, dir/"a"/"c"/"text", "hello"});
+        writer.add({kind::linkFile, dir/"a"/"d"/"linked", dir/"a"/"c"/"text"});
+        writer.add({kind::removeFile, dir/"stale", ""});
+        writer.add({kind::removeDir, dir/"old", ""});
+
+        // Nothing on the disk before it is handed over
+        EXPECT_FALSE(exists(dir/"a"));
+        EXPECT_TRUE(isFile(dir/"stale"));
+        writer.submit();
+    }
+    EXPECT_EQ(backgroundWriter::collecting(), nullptr);
+    EXPECT_EQ(writer.wait(), "");
+
+    EXPECT_EQ(contents(dir/"a"/"b"/"collected"), contents(dir/"direct"));
+    EXPECT_GT(contents(dir/"direct").size(), 20u);
+    EXPECT_EQ(contents(dir/"a"/"c"/"text"), "hello");
+    EXPECT_EQ(inode(dir/"a"/"d"/"linked"), inode(dir/"a"/"c"/"text"));
+    EXPECT_FALSE(exists(dir/"stale"));
+    EXPECT_FALSE(exists(dir/"old"));
+}
+
+
+TEST(backgroundWriter, StopsAtTheFirstFailureNamingTheFileAndWhy)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir);
+    std::ofstream(dir/"plain") << "a file, not a directory";
+
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        writer.add({kind::writeFile, dir/"first", "1"});
+        writer.add({kind::writeFile, dir/"plain"/"inside", "2"});
+        writer.add({kind::writeFile, dir/"last", "3"});
+        writer.submit();
+    }
+    const std::string failure = writer.wait();
+    EXPECT_NE(failure.find(dir/"plain"/"inside"), std::string::npos)
+        << failure;
+    EXPECT_NE(failure.find("Not a directory"), std::string::npos) << failure;
+    EXPECT_TRUE(isFile(dir/"first"));
+    EXPECT_FALSE(exists(dir/"last"));
+
+    // The writer goes on with the next write time
+    {
+        const backgroundWriter::collection collecting(writer);
+        writer.add({kind::writeFile, dir/"next", "4"});
+        writer.submit();
+    }
+    EXPECT_EQ(writer.wait(), "");
+    EXPECT_EQ(contents(dir/"next"), "4");
+}
+
+
+TEST(backgroundWriter, WritesALargeFileAsItComes)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    const label n = 50000;
+    {
+        fastOFstream os(dir/"direct");
+        writeNumbers(os, n);
+    }
+    ASSERT_GT(fileSize(dir/"direct"), 2*backgroundWriter::pieceSize);
+
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        {
+            fastOFstream os(dir/"a"/"large");
+            writeNumbers(os, n);
+            fastOFstream small(dir/"a"/"small");
+            writeNumbers(small, 10);
+        }
+        EXPECT_EQ(writer.collectedFailure(), "");
+
+        // The large file on the disk, whole, before the hand-over
+        EXPECT_EQ(contents(dir/"a"/"large"), contents(dir/"direct"));
+        EXPECT_FALSE(exists(dir/"a"/"small"));
+        writer.submit();
+    }
+    EXPECT_EQ(writer.wait(), "");
+    EXPECT_EQ(contents(dir/"a"/"large"), contents(dir/"direct"));
+    EXPECT_GT(fileSize(dir/"a"/"small"), 50);
+}
+
+
+TEST(backgroundWriter, RemovesAFileThatDidNotFit)
+{
+    // In a child process: a file-size limit of 64 kB, as a full disk. The
+    // child a new process (threadsafe): OpenMP's threads do not survive a
+    // fork
+    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir);
+    EXPECT_EXIT
+    (
+        std::exit(writeBeyondAFileSizeLimit(dir) ? 0 : 1),
+        ::testing::ExitedWithCode(0),
+        ""
+    );
+    EXPECT_EXIT
+    (
+        std::exit(collectBeyondAFileSizeLimit(dir) ? 0 : 1),
+        ::testing::ExitedWithCode(0),
+        ""
+    );
+}
+
+
+TEST(backgroundWriter, FinishesTheWriteHandedOverWhenTheProcessExits)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir);
+    const label nFiles = 2000;
+    const std::string bytes(1 << 12, 'x');
+    EXPECT_EXIT
+    (
+        handOverAndExit(dir, nFiles, bytes, 3),
+        ::testing::ExitedWithCode(3),
+        ""
+    );
+    EXPECT_EQ(contents(dir/"record"), "last");
+    label whole = 0;
+    for (label i = 0; i < nFiles; ++i)
+    {
+        whole += fileSize(dir/"d"/Foam::name(i)) == off_t(bytes.size());
+    }
+    EXPECT_EQ(whole, nFiles);
+}
+
+
+// ************************************************************************* //
