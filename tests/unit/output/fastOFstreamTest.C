@@ -19,11 +19,13 @@ Description
     uniform), a cloud's vector field and lists (long, short, empty,
     uniform, of labels) written by
     fastWriteIO and writeList, whose long lists are formatted from memory,
-    are byte for byte OpenFOAM's, in ASCII and binary.
+    are byte for byte OpenFOAM's, in ASCII and binary. A file written
+    where a hard link was is a new file: the file linked to is unchanged.
 
 \*---------------------------------------------------------------------------*/
 
 #include "scratchDir.H"
+#include "fileContents.H"
 #include "fastOFstream.H"
 #include "OFstream.H"
 #include "exactPrecision.H"
@@ -38,6 +40,7 @@ Description
 #include <gtest/gtest.h>
 #include <cmath>
 #include <fstream>
+#include <unistd.h>
 #include <limits>
 #include <random>
 
@@ -73,16 +76,6 @@ scalarList testValues()
         v[i++] = x;
     }
     return v;
-}
-
-
-//- The text of a file
-std::string contents(const fileName& file)
-{
-    std::ifstream is(file);
-    std::stringstream text;
-    text << is.rdbuf();
-    return text.str();
 }
 
 
@@ -126,6 +119,26 @@ TEST(fastOFstream, WritesWhatOFstreamWritesByteForByte)
         EXPECT_EQ(linesFast, linesSlow);
         EXPECT_GT(linesFast, label(values.size()));
     }
+}
+
+
+TEST(fastOFstream, WritesANewFileWhereAHardLinkWas)
+{
+    // As a static field linked between time directories, written again at
+    // a restart: the other time directories keep theirs
+    const fileName dir(scratchDir("fastOFstream"));
+    mkDir(dir);
+    rm(dir/"shared");
+    rm(dir/"linked");
+    std::ofstream(dir/"shared") << "the first write time's";
+    ASSERT_EQ(::link((dir/"shared").c_str(), (dir/"linked").c_str()), 0);
+    {
+        fastOFstream os(dir/"linked");
+        os  << word("rewritten") << nl;
+    }
+    EXPECT_EQ(contents(dir/"shared"), "the first write time's");
+    EXPECT_EQ(contents(dir/"linked"), "rewritten\n");
+    EXPECT_NE(inode(dir/"linked"), inode(dir/"shared"));
 }
 
 

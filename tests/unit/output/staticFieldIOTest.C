@@ -15,6 +15,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "scratchDir.H"
+#include "fileContents.H"
 #include "testCase.H"
 #include "staticFieldIO.H"
 #include "pointFields.H"
@@ -30,20 +31,6 @@ using namespace Foam;
 
 namespace
 {
-
-std::string contents(const fileName& file)
-{
-    std::ifstream is(file);
-    std::stringstream text;
-    text << is.rdbuf();
-    return text.str();
-}
-
-ino_t inode(const fileName& file)
-{
-    struct stat st;
-    return ::stat(file.c_str(), &st) == 0 ? st.st_ino : 0;
-}
 
 } // End anonymous namespace
 

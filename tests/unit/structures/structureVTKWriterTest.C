@@ -17,6 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "scratchDir.H"
+#include "fileContents.H"
 #include "structureTestTools.H"
 #include "structureVTKWriter.H"
 #include "OSspecific.H"
@@ -102,10 +103,7 @@ struct vtkPolyData
 //- The (name, time) entries of a .vtk.series file
 std::vector<std::pair<std::string, double>> seriesOf(const fileName& file)
 {
-    std::ifstream is(file);
-    std::stringstream text;
-    text << is.rdbuf();
-    const std::string s = text.str();
+    const std::string s = contents(file);
     const std::regex entry
     (
         "\\{ \"name\" : \"([^\"]+)\", \"time\" : ([-+.eE0-9]+) \\}"

@@ -399,10 +399,11 @@ void Foam::mpmTime::writeInBackground
             writer_->submit();
             writing_ = timeName();
         }
-        else if (!writer_->collectedFailure().empty())
+        else
         {
             // A file written as it came: the C library's reason
-            failure = writer_->collectedFailure();
+            const std::string why = writer_->collectedFailure();
+            failure = why.empty() ? failure : string(why);
         }
     }
     if (!collected)
@@ -458,6 +459,12 @@ Foam::mpmTime::mpmTime
     {
         writer_.reset(new backgroundWriter());
     }
+    if (solver)
+    {
+        Info<< "Time directories written "
+            << (writer_ ? "in the background" : "by the solver's thread")
+            << nl << endl;
+    }
 }
 
 
@@ -465,7 +472,16 @@ Foam::mpmTime::mpmTime
 
 Foam::mpmTime::~mpmTime()
 {
-    finishWrites();
+    // The solvers finish their writes first; here (a run ended otherwise)
+    // not through finishWrites, whose FatalError may be thrown
+    if (writer_ && !writing_.empty())
+    {
+        const std::string failure = writer_->wait();
+        if (!failure.empty())
+        {
+            std::cerr << failure << std::endl;
+        }
+    }
 }
 
 
@@ -708,7 +724,8 @@ bool Foam::mpmTime::writeObject
     const fileName dir(timePath());
     rm(dir/"uniform"/recordName);
 
-    if (writer_)
+    // (a compressed file is checked by reading it back: on this thread)
+    if (writer_ && cmp == IOstream::UNCOMPRESSED)
     {
         writeInBackground(fmt, ver, cmp, valid);
         return true;

@@ -16,6 +16,7 @@ License
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <unordered_set>
 
 #include <fcntl.h>
@@ -40,7 +41,7 @@ std::string reason
 (
     const std::string& what,
     const std::string& path,
-    const std::string& why = std::strerror(errno)
+    const std::string& why
 )
 {
     return "cannot " + what + " " + path + ": " + why;
@@ -150,15 +151,25 @@ bool linkFile(const std::string& source, const std::string& path)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
+bool Foam::backgroundWriter::unlinkFile(const std::string& path)
+{
+    return removeFile(path) && removeFile(path + ".gz");
+}
+
+
+bool Foam::backgroundWriter::makeParent(const std::string& path)
+{
+    dirSet made;
+    return makeDir(parentOf(path), made);
+}
+
+
 int Foam::backgroundWriter::createFile(const std::string& path)
 {
-    // Never through a link, symbolic or hard, that the path was; as
-    // OFstream, an older compressed twin removed
-    if (!removeFile(path) || !removeFile(path + ".gz"))
-    {
-        return -1;
-    }
-    return ::open(path.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666);
+    return
+        unlinkFile(path)
+      ? ::open(path.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666)
+      : -1;
 }
 
 
@@ -231,7 +242,8 @@ std::string Foam::backgroundWriter::perform(const std::vector<operation>& ops)
                  || !writeFile(op.path, op.data)
                 )
                 {
-                    return reason("write", op.path);
+                    const std::string why(std::strerror(errno));
+                    return reason("write", op.path, why);
                 }
                 break;
             case kind::linkFile:
@@ -241,13 +253,8 @@ std::string Foam::backgroundWriter::perform(const std::vector<operation>& ops)
                  || !linkFile(op.data, op.path)
                 )
                 {
-                    return reason("link " + op.data + " as", op.path);
-                }
-                break;
-            case kind::removeFile:
-                if (!removeFile(op.path))
-                {
-                    return reason("remove", op.path);
+                    const std::string why(std::strerror(errno));
+                    return reason("link " + op.data + " as", op.path, why);
                 }
                 break;
             case kind::failure:
@@ -258,6 +265,7 @@ std::string Foam::backgroundWriter::perform(const std::vector<operation>& ops)
                 // of this write time
                 std::error_code ignored;
                 std::filesystem::remove_all(op.path, ignored);
+                made.clear();
                 break;
             }
         }
@@ -292,7 +300,11 @@ void Foam::backgroundWriter::finishAtExit()
 {
     if (live_)
     {
-        live_->wait();
+        const std::string failure = live_->wait();
+        if (!failure.empty())
+        {
+            std::cerr << failure << std::endl;
+        }
     }
 }
 

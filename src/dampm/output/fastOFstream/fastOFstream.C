@@ -15,6 +15,7 @@ License
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cerrno>
 #include <cstring>
 #include <string>
 
@@ -220,7 +221,10 @@ Foam::Detail::fastOFstreamTarget::fastOFstreamTarget
 {
     if (!collector_)
     {
+        // A file written again is a new one (OFstream would write through
+        // a hard link that other time directories share)
         mkDir(pathname.path());
+        backgroundWriter::unlinkFile(pathname);
         file_.reset
         (
             new OFstream
@@ -246,8 +250,10 @@ bool Foam::Detail::collectBuffer::writeOut
     if (!toFile_)
     {
         toFile_ = true;
-        mkDir(fileName(path_).path());
-        fd_ = backgroundWriter::createFile(path_);
+        if (backgroundWriter::makeParent(path_))
+        {
+            fd_ = backgroundWriter::createFile(path_);
+        }
     }
     const bool ok =
         fd_ >= 0
@@ -256,7 +262,7 @@ bool Foam::Detail::collectBuffer::writeOut
     bytes_.clear();
     if (!ok)
     {
-        error_ = errno;
+        error_ = errno ? errno : EIO;
     }
     return ok;
 }
