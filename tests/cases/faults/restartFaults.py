@@ -100,6 +100,11 @@ def formats(c, ref, times):
     return formatVariant(c, ref, times, "asciiCloud", {"cloudFormat": "ascii"}, "ascii")
 
 
+def filesIn(d):
+    """The paths of the files below directory d."""
+    return [os.path.join(r, f) for r, _, fs in os.walk(d) for f in fs]
+
+
 def foreground(c, ref, times):
     """The reference's time directories are written by the background
     writer (writeInBackground's default); written by the solver's own thread
@@ -110,8 +115,7 @@ def foreground(c, ref, times):
     fc.checkAccepted("foreground", status, out)
     check(fc.timeDirs(run) == times, "foreground: the time directories %s" % times)
     for t in times:
-        listed = [sorted(os.path.relpath(os.path.join(r, f), os.path.join(case, t))
-                         for r, _, fs in os.walk(os.path.join(case, t)) for f in fs)
+        listed = [sorted(os.path.relpath(f, os.path.join(case, t)) for f in filesIn(os.path.join(case, t)))
                   for case in (ref, run)]
         check(listed[0] == listed[1], "foreground: the files of %s are the background's" % t)
         fc.sameFiles(ref, run, t, listed[0], "foreground")
@@ -238,7 +242,7 @@ def fullDisk(c, ref, times):
     subprocess.run(["umount", work], capture_output=True)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    size = lambda d: sum(os.path.getsize(os.path.join(r, f)) for r, _, fs in os.walk(d) for f in fs)
+    size = lambda d: sum(os.path.getsize(f) for f in filesIn(d))
     need = size(os.path.join(ref, "constant")) + size(os.path.join(ref, "system")) \
         + size(os.path.join(ref, times[0])) + size(os.path.join(ref, times[1]))
     room = need + size(os.path.join(ref, times[2])) // 2
@@ -250,8 +254,7 @@ def fullDisk(c, ref, times):
     limit = None
     if not mounted:
         # Files may not grow beyond the biggest file of the second write
-        biggest = max(os.path.getsize(os.path.join(r, f))
-                      for r, _, fs in os.walk(os.path.join(ref, times[2])) for f in fs)
+        biggest = max(os.path.getsize(f) for f in filesIn(os.path.join(ref, times[2])))
         limit = lambda: resource.setrlimit(resource.RLIMIT_FSIZE, (biggest - 1, biggest - 1))
     if mounted:
         # The whole output on the full disk, as runApplication writes it:

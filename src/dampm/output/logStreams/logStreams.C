@@ -9,8 +9,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "logStreams.H"
+#include "backgroundWriter.H"
 
-#include <cerrno>
 #include <cstdio>
 #include <iostream>
 #include <streambuf>
@@ -32,22 +32,8 @@ class droppingBuffer
 
     void drain()
     {
-        const char* p = pbase();
-        std::size_t n = pptr() - pbase();
-        while (n)
-        {
-            const ssize_t w = ::write(fd_, p, n);
-            if (w < 0 && errno == EINTR)
-            {
-                continue;
-            }
-            if (w <= 0)
-            {
-                break;
-            }
-            p += w;
-            n -= std::size_t(w);
-        }
+        // (what is refused is dropped: the result is not looked at)
+        Foam::backgroundWriter::writeAll(fd_, pbase(), pptr() - pbase());
         setp(buffer_, buffer_ + sizeof(buffer_));
     }
 
