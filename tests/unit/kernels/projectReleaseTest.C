@@ -91,9 +91,7 @@ std::vector<double> areas(const gridGeometry& g, const Kernel& k, const int n)
 
 GIMPKernel gimp(const int n)
 {
-    GIMPKernel k;
-    k.lp = 0.5/n;
-    return k;
+    return GIMPKernel(0.5/n);
 }
 
 // An irregular release with random thickness: the volume is kept

@@ -279,9 +279,7 @@ void checkThreadIndependence(const Kernel& kernel)
 
 GIMPKernel gimp()
 {
-    GIMPKernel k;
-    k.lp = 0.25;
-    return k;
+    return GIMPKernel(0.25);
 }
 
 } // End anonymous namespace

@@ -20,7 +20,17 @@ Description
     - the node values that pad the lanes stay +0;
     - the surface gather (S5) against its scalar form, with and without
       terrain;
-    - the velocity gather of G2P against the generic (any Dim) sum.
+    - the velocity gather of G2P against the generic (any Dim) sum;
+    - four particles' stencils at once (stencilLanes) against the scalar
+      stencil: weights, gradients, offsets and nodes, for the three shape
+      functions (GIMP at half-widths 1/2, 1/4 and 1/6), at random positions
+      and at the places where a kernel changes piece;
+    - the force scatter with the surface gather in the same pass (the
+      frictionless case's S5 + S7) against S5 column by column then the
+      scalar scatter: the columns' gathered values and the node sums.
+    Random columns fill each tile with any number of columns, so that the
+    passes four at a time also end tiles with one to three columns taken
+    one by one.
 
 \*---------------------------------------------------------------------------*/
 
@@ -335,11 +345,206 @@ void checkVelocityGather(const Kernel& kernel)
 }
 
 
+//- Four particles' stencils against four scalar stencils, bit for bit
+template<class Kernel>
+void checkStencilLanes
+(
+    const gridGeometry& g,
+    const Kernel& kernel,
+    const double x[4],
+    const double y[4]
+)
+{
+    const stencilLanes<Kernel> lanes(g, kernel, x, y);
+    constexpr int W = Kernel::width;
+    for (int l = 0; l < 4; ++l)
+    {
+        const stencil<2, Kernel> st(g, kernel, x[l], y[l], 0);
+        ASSERT_EQ(lanes.base[l], st.base) << "lane " << l;
+        for (int d = 0; d < 2; ++d)
+        {
+            ASSERT_TRUE(sameBits(lanes.r0[d][l], st.r0[d])) << "lane " << l;
+            for (int a = 0; a < W; ++a)
+            {
+                ASSERT_TRUE(sameBits(lanes.w[d][a][l], st.w[d][a]))
+                    << "lane " << l << " x " << x[l] << " y " << y[l];
+                ASSERT_TRUE(sameBits(lanes.dw[d][a][l], st.dw[d][a]))
+                    << "lane " << l << " x " << x[l] << " y " << y[l];
+            }
+        }
+    }
+
+    // The node loops: the same nodes, weights, gradients and offsets
+    std::vector<int32_t> nodes[4];
+    std::vector<double> values[4];
+    lanes.forEachNode
+    (
+        [&]
+        (
+            const int,
+            const int32_t offset,
+            const lanes4 N,
+            const lanes4* gN,
+            const lanes4* r
+        )
+        {
+            int32_t j[4];
+            lanes.nodesAt(offset, j);
+            for (int l = 0; l < 4; ++l)
+            {
+                nodes[l].push_back(j[l]);
+                for (const double v : {N[l], gN[0][l], gN[1][l], r[0][l], r[1][l]})
+                {
+                    values[l].push_back(v);
+                }
+            }
+        }
+    );
+    for (int l = 0; l < 4; ++l)
+    {
+        const stencil<2, Kernel> st(g, kernel, x[l], y[l], 0);
+        std::size_t k = 0, v = 0;
+        st.forEachNode
+        (
+            [&]
+            (
+                const int32_t j,
+                const double N,
+                const double* gN,
+                const double* r
+            )
+            {
+                ASSERT_EQ(nodes[l][k++], j);
+                for (const double e : {N, gN[0], gN[1], r[0], r[1]})
+                {
+                    ASSERT_TRUE(sameBits(values[l][v++], e)) << "lane " << l;
+                }
+            }
+        );
+    }
+}
+
+
+//- stencilLanes at random positions and where a kernel changes piece:
+//  cell faces, cell centres and, for GIMP, lp either side of a face
+template<class Kernel>
+void checkStencilLanes(const Kernel& kernel, const double lp)
+{
+    const gridGeometry g
+    (
+        uniformGrid(2, {10, -5, 0}, {0.4, 0.5, 1}, {24, 20, 1})
+    );
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<double> special;
+    for (const double f : {0.0, 0.5, lp, 1 - lp, 0.5 - lp, 0.5 + lp})
+    {
+        for (const double c : {0.0, 3.0, 23.0})
+        {
+            special.push_back(c + f);
+        }
+    }
+    const int nSpecial = int(special.size());
+    for (int trial = 0; trial < 2000; ++trial)
+    {
+        double x[4], y[4];
+        for (int l = 0; l < 4; ++l)
+        {
+            const double sx = trial < nSpecial*nSpecial
+              ? special[(trial + l) % nSpecial] : 24*u(gen);
+            const double sy = trial < nSpecial*nSpecial
+              ? special[(trial/nSpecial + l) % nSpecial] : 20*u(gen);
+            x[l] = g.origin[0] + std::min(sx, 23.999)*g.dx[0];
+            y[l] = g.origin[1] + std::min(sy, 19.999)*g.dx[1];
+        }
+        checkStencilLanes(g, kernel, x, y);
+        if (::testing::Test::HasFatalFailure())
+        {
+            return;
+        }
+    }
+}
+
+
+//- The force scatter with S5 in the same pass, against S5 column by
+//  column (gatherColumn) then the scalar scatter; each on its own copy of
+//  the same random columns
+template<class Kernel, bool Terrain>
+void checkFusedGather(const Kernel& kernel)
+{
+    const double rho = 1800, gravity = 9.81, hMin = 0.3;
+    laneCase t, r;
+    const shallowColumns cols = t.columns(), ref = r.columns();
+
+    // The forces zeroed, the node heights kept (zeroNodes clears both)
+    std::fill(t.grid.loads.begin(), t.grid.loads.end(), 0.0);
+    scatterForces<Kernel, true, false, false, true, Terrain>
+    (
+        t.scatter(), kernel, t.grid, cols, rho, gravity, hMin, true
+    );
+
+    const label nN = r.g.nNodes();
+    std::vector<double> F[2];
+    F[0].assign(nN, 0.0);
+    F[1].assign(nN, 0.0);
+    r.scatter()
+    (
+        kernel,
+        ref,
+        [&](const int32_t i, const stencil<2, Kernel>& st)
+        {
+            gatherColumn<Kernel, Terrain>(st, r.grid, ref, i, hMin, true);
+            const columnLoads c =
+                loadsOf<true, false>(ref, i, rho, gravity);
+            st.forEachNode
+            (
+                [&]
+                (
+                    const int32_t j,
+                    const double N,
+                    const double* gN,
+                    const double*
+                )
+                {
+                    F[0][j] += N*c.bx + c.pre*gN[0];
+                    F[1][j] += N*c.by + c.pre*gN[1];
+                }
+            );
+        }
+    );
+
+    for (label i = 0; i < cols.n; ++i)
+    {
+        for
+        (
+            const auto& f :
+            {
+                std::make_pair(cols.h, ref.h), {cols.a, ref.a},
+                {cols.kappa, ref.kappa}, {cols.Zb, ref.Zb},
+                {cols.gradZetaX, ref.gradZetaX},
+                {cols.gradZetaY, ref.gradZetaY},
+                {cols.gradZx, ref.gradZx}, {cols.gradZy, ref.gradZy}
+            }
+        )
+        {
+            ASSERT_TRUE(sameBits(f.first[i], f.second[i]))
+                << "column " << i << ": " << f.first[i] << " against "
+                << f.second[i];
+        }
+    }
+    typedef shallowGrid L;
+    for (label j = 0; j < nN; ++j)
+    {
+        const double* l = t.grid.loads.data() + L::nLoads*j;
+        ASSERT_TRUE(sameBits(l[L::FX], F[0][j])) << "node " << j;
+        ASSERT_TRUE(sameBits(l[L::FY], F[1][j])) << "node " << j;
+    }
+}
+
+
 GIMPKernel gimp()
 {
-    GIMPKernel k;
-    k.lp = 0.25;
-    return k;
+    return GIMPKernel(0.25);
 }
 
 } // End anonymous namespace
@@ -386,6 +591,26 @@ TEST(vectorLanes, VelocityGatherIsTheScalarSumBitForBit)
     checkVelocityGather(linearKernel());
     checkVelocityGather(gimp());
     checkVelocityGather(quadraticBSplineKernel());
+}
+
+
+TEST(vectorLanes, FourStencilsAtOnceAreTheScalarStencilsBitForBit)
+{
+    checkStencilLanes(linearKernel(), 0.25);
+    checkStencilLanes(quadraticBSplineKernel(), 0.25);
+    for (const double lp : {0.5, 0.25, 1.0/6})
+    {
+        checkStencilLanes(GIMPKernel(lp), lp);
+    }
+}
+
+
+TEST(vectorLanes, ForceScatterWithTheSurfaceGatherIsTheScalarPassBitForBit)
+{
+    checkFusedGather<quadraticBSplineKernel, true>(quadraticBSplineKernel());
+    checkFusedGather<quadraticBSplineKernel, false>(quadraticBSplineKernel());
+    checkFusedGather<GIMPKernel, false>(gimp());
+    checkFusedGather<linearKernel, true>(linearKernel());
 }
 
 

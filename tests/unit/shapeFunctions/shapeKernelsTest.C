@@ -136,9 +136,7 @@ void checkDerivative(const Kernel& kernel)
 
 GIMPKernel gimp(const double lp)
 {
-    GIMPKernel k;
-    k.lp = lp;
-    return k;
+    return GIMPKernel(lp);
 }
 
 } // End anonymous namespace
