@@ -27,7 +27,10 @@ Description
       and at the places where a kernel changes piece;
     - the force scatter with the surface gather in the same pass (the
       frictionless case's S5 + S7) against S5 column by column then the
-      scalar scatter: the columns' gathered values and the node sums.
+      scalar scatter: the columns' gathered values and the node sums;
+    - S9 in one pass (gridToColumns) against G2P then the advance of each
+      column one by one: positions, velocities, gradients, footprints and
+      the removal and split marks.
     Random columns fill each tile with any number of columns, so that the
     passes four at a time also end tiles with one to three columns taken
     one by one.
@@ -393,10 +396,12 @@ void checkStencilLanes
             for (int l = 0; l < 4; ++l)
             {
                 nodes[l].push_back(j[l]);
-                for (const double v : {N[l], gN[0][l], gN[1][l], r[0][l], r[1][l]})
+                for (const double v : {N[l], gN[0][l], gN[1][l]})
                 {
                     values[l].push_back(v);
                 }
+                values[l].push_back(r[0][l]);
+                values[l].push_back(r[1][l]);
             }
         }
     );
@@ -542,6 +547,107 @@ void checkFusedGather(const Kernel& kernel)
 }
 
 
+//- The arrays S9 moves, on a laneCase's columns, with random footprints
+struct motionArrays
+{
+    std::vector<double> F[4];
+    std::vector<char> removal, split;
+
+    explicit motionArrays(laneCase& t)
+    {
+        std::mt19937 gen(3);
+        std::uniform_real_distribution<double> u(0.5, 1.5), v(-0.3, 0.3);
+        const label n = t.p.size();
+        for (int k = 0; k < 4; ++k)
+        {
+            F[k].resize(n);
+            for (double& f : F[k])
+            {
+                f = (k == 0 || k == 3 ? u(gen) : v(gen))*t.g.dx[0];
+            }
+        }
+        removal.assign(n, 7);
+        split.assign(n, 7);
+    }
+
+    columnMotion of(laneCase& t)
+    {
+        columnMotion m;
+        m.n = t.p.size();
+        m.x = t.p.component(particleArrays::X);
+        m.y = t.p.component(particleArrays::Y);
+        m.ux = t.p.component(particleArrays::UX);
+        m.uy = t.p.component(particleArrays::UY);
+        for (int k = 0; k < 4; ++k)
+        {
+            m.C[k] = t.p.component(t.gradU + k);
+            m.F[k] = F[k].data();
+        }
+        m.V = t.p.component(particleArrays::VOL);
+        m.removal = removal.data();
+        m.splitCandidate = split.data();
+        return m;
+    }
+};
+
+
+//- gridToColumns against gridToParticlesVelocity then columnAdvance one
+//  column at a time, with a large step (columns leave through the open
+//  side and through the walls) and splitting on
+template<class Kernel>
+void checkGridToColumns(const Kernel& kernel)
+{
+    laneCase t, r;
+    motionArrays mt(t), mr(r);
+    domainSides sides;
+    sides.wall[0][0] = sides.wall[1][0] = sides.wall[1][1] = true;
+    splitRule rule;
+    rule.maxArea = 0.8*t.g.dx[0]*t.g.dx[1];
+    rule.hSplit = 0.01;
+    const double dt = 0.3;
+    const double* const vel[2] = {t.grid.vx.data(), t.grid.vy.data()};
+
+    const columnMotion qt = mt.of(t), qr = mr.of(r);
+    const label nRemoved = gridToColumns
+    (
+        t.g, kernel, vel, qt, columnAdvance(t.g, sides, dt, true, rule, qt)
+    );
+
+    gridToParticlesVelocity<2>
+    (
+        r.g, kernel, affineArraysOf<2>(r.p, r.gradU), vel
+    );
+    const columnAdvance advance(r.g, sides, dt, true, rule, qr);
+    label nRef = 0;
+    for (label i = 0; i < qr.n; ++i)
+    {
+        double C[4] = {qr.C[0][i], qr.C[1][i], qr.C[2][i], qr.C[3][i]};
+        nRef += advance(i, qr.ux[i], qr.uy[i], C);
+    }
+
+    EXPECT_GT(nRef, 0);
+    EXPECT_EQ(nRemoved, nRef);
+    EXPECT_EQ(mt.removal, mr.removal);
+    EXPECT_EQ(mt.split, mr.split);
+    for (label i = 0; i < qt.n; ++i)
+    {
+        for
+        (
+            const auto& f :
+            {
+                std::make_pair(qt.x, qr.x), {qt.y, qr.y}, {qt.ux, qr.ux},
+                {qt.uy, qr.uy}, {qt.C[0], qr.C[0]}, {qt.C[1], qr.C[1]},
+                {qt.C[2], qr.C[2]}, {qt.C[3], qr.C[3]}, {qt.F[0], qr.F[0]},
+                {qt.F[1], qr.F[1]}, {qt.F[2], qr.F[2]}, {qt.F[3], qr.F[3]}
+            }
+        )
+        {
+            ASSERT_TRUE(sameBits(f.first[i], f.second[i])) << "column " << i;
+        }
+    }
+}
+
+
 GIMPKernel gimp()
 {
     return GIMPKernel(0.25);
@@ -611,6 +717,14 @@ TEST(vectorLanes, ForceScatterWithTheSurfaceGatherIsTheScalarPassBitForBit)
     checkFusedGather<quadraticBSplineKernel, false>(quadraticBSplineKernel());
     checkFusedGather<GIMPKernel, false>(gimp());
     checkFusedGather<linearKernel, true>(linearKernel());
+}
+
+
+TEST(vectorLanes, VelocityGatherAndAdvanceInOnePassAreTheTwoPassesBitForBit)
+{
+    checkGridToColumns(linearKernel());
+    checkGridToColumns(gimp());
+    checkGridToColumns(quadraticBSplineKernel());
 }
 
 

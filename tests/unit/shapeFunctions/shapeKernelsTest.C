@@ -21,6 +21,7 @@ Description
 #include "IStringStream.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
+#include <cstring>
 #include <random>
 
 using namespace Foam;
@@ -200,6 +201,43 @@ TEST(shapeFunctions, GIMPTendsToLinearAwayFromNodes)
     EXPECT_NEAR(wg[1], wl[0], 1e-15);
     EXPECT_NEAR(wg[2], wl[1], 1e-15);
     EXPECT_NEAR(wg[0], 0.0, 1e-15);
+}
+
+
+TEST(shapeFunctions, GIMPWeightsAreItsNodeFunctionAtEachNode)
+{
+    // The weights skip the inner piece at the outer nodes: the same bits
+    // as the node function with every piece, at random positions and where
+    // the pieces change, for the half-widths the solvers use
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (const double lp : {0.5, 0.25, 1.0/6, 0.1})
+    {
+        const GIMPKernel k = gimp(lp);
+        std::vector<double> xis;
+        for (const double f : {0.0, lp, 0.5 - lp, 0.5, 0.5 + lp, 1 - lp})
+        {
+            xis.push_back(7 + f);
+        }
+        for (int i = 0; i < 1000; ++i)
+        {
+            xis.push_back(7 + u(gen));
+        }
+        for (const double xi : xis)
+        {
+            double w[3], dw[3];
+            const int b = k(xi, w, dw);
+            for (int a = 0; a < 3; ++a)
+            {
+                double wn, dwn;
+                k.node(xi - b - a, wn, dwn);
+                EXPECT_EQ(std::memcmp(&w[a], &wn, sizeof(double)), 0)
+                    << "lp " << lp << " xi " << xi << " node " << a;
+                EXPECT_EQ(std::memcmp(&dw[a], &dwn, sizeof(double)), 0)
+                    << "lp " << lp << " xi " << xi << " node " << a;
+            }
+        }
+    }
 }
 
 

@@ -763,20 +763,6 @@ void Foam::depthAveragedFlow::updateGrid(const scalar dt)
 Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
 {
     const gridGeometry& g = grid_.geometry();
-    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
-    visitShape
-    (
-        *shape_,
-        [&](const auto& kernel)
-        {
-            gridToParticlesVelocity<2>
-            (
-                g, kernel, particles_, fields_.gradU(), vel
-            );
-        }
-    );
-
-    // Positions, footprints, walls and open sides
     const label n = particles_.size();
     flagged_.resize(n);
     columnMotion motion;
@@ -794,11 +780,23 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     motion.removal = flagged_.data();
     motion.splitCandidate = splitting_.flags(n).data();
 
-    // The columns to split are marked here, and again after a removal
-    // (which moves them); the split checks that the marked fit the domain
-    const label nRemoved = advanceColumns
+    // Velocities from the grid, then positions, footprints, walls and open
+    // sides, in one pass. The columns to split are marked here, and again
+    // after a removal (which moves them); the split checks that the marked
+    // fit the domain
+    const columnAdvance advance
     (
         g, sides_, dt, splitting_.active(), splitting_.rule(), motion
+    );
+    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
+    label nRemoved = 0;
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            nRemoved = gridToColumns(g, kernel, vel, motion, advance);
+        }
     );
     const double* m = particles_.component(particleArrays::M);
 

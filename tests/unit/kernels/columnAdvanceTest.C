@@ -7,12 +7,14 @@ License
     This file is part of dampm, distributed under GPL-3.0-or-later.
 
 Description
-    S9 for every column (advanceColumns, the vectorised pass): positions
-    moved, a column through a wall put back inside with no velocity across
-    it, one through an open side marked and counted, the footprint carried
-    by I + dt C, the affine field pushed forward only where that does not
-    grow it (and not at all when J <= 0), and the split candidates marked
-    only with splitting on. Exact values: each is one short expression.
+    S9's advance of a column (columnAdvance): positions moved, a column
+    through a wall put back inside with no velocity across it, one through
+    an open side marked and counted, the footprint carried by I + dt C, the
+    affine field pushed forward only where that does not grow it (and not
+    at all when J <= 0), and the split candidates marked only with
+    splitting on. Exact values: each is one short expression. Four columns
+    at once (lanes4, as gridToColumns takes them) give the same bits as one
+    by one.
 
 \*---------------------------------------------------------------------------*/
 
@@ -61,12 +63,55 @@ struct columns
         m.splitCandidate = split.data();
         return m;
     }
+
+    //- Advance every column one by one; the number marked for removal
+    int advanceOneByOne(const columnAdvance& a)
+    {
+        int nRemoved = 0;
+        for (int i = 0; i < int(x.size()); ++i)
+        {
+            double Ci[4] = {C[0][i], C[1][i], C[2][i], C[3][i]};
+            nRemoved += a(i, ux[i], uy[i], Ci);
+        }
+        return nRemoved;
+    }
+
+    //- Advance the first four columns at once, the others one by one
+    int advanceInLanes(const columnAdvance& a)
+    {
+        lanes4 Ci[4];
+        for (int k = 0; k < 4; ++k)
+        {
+            Ci[k] = loadLanes(C[k].data());
+        }
+        int nRemoved =
+            a(0, loadLanes(ux.data()), loadLanes(uy.data()), Ci);
+        for (int i = 4; i < int(x.size()); ++i)
+        {
+            double Cj[4] = {C[0][i], C[1][i], C[2][i], C[3][i]};
+            nRemoved += a(i, ux[i], uy[i], Cj);
+        }
+        return nRemoved;
+    }
+
+    //- Every array the same, bit for bit
+    bool operator==(const columns& o) const
+    {
+        bool same =
+            x == o.x && y == o.y && ux == o.ux && uy == o.uy
+         && removal == o.removal && split == o.split;
+        for (int k = 0; k < 4; ++k)
+        {
+            same = same && C[k] == o.C[k] && F[k] == o.F[k];
+        }
+        return same;
+    }
 };
 
 } // End anonymous namespace
 
 
-TEST(advanceColumns, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
+TEST(columnAdvance, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
 {
     // x in [0, 10] (a wall below, open above), y in [0, 4] (walls)
     const gridGeometry g = uniformGrid(2, {0, 0, 0}, {1, 1, 1}, {10, 4, 1});
@@ -79,6 +124,10 @@ TEST(advanceColumns, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
     const double dt = 0.5;
 
     columns c(6);
+    const auto advance = [&](columns& cols, const bool split)
+    {
+        return columnAdvance(g, sides, dt, split, rule, cols.motion());
+    };
     // 0: inside, no gradient
     c.x[0] = 5; c.y[0] = 2; c.ux[0] = 1; c.uy[0] = 0.5;
     // 1: through the wall at x = 0
@@ -93,8 +142,10 @@ TEST(advanceColumns, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
     // 5: folding over (J < 0: C kept), through the wall at y = 4
     c.x[5] = 7; c.y[5] = 3.9; c.uy[5] = 1; c.C[0][5] = -3;
 
-    const gridGeometry::index nRemoved =
-        advanceColumns(g, sides, dt, true, rule, c.motion());
+    columns lanes(c);
+    const int nRemoved = c.advanceOneByOne(advance(c, true));
+    EXPECT_EQ(lanes.advanceInLanes(advance(lanes, true)), nRemoved);
+    EXPECT_TRUE(lanes == c);
 
     EXPECT_EQ(nRemoved, 1);
     EXPECT_EQ(c.removal, std::vector<char>({0, 0, 1, 0, 0, 0}));
@@ -126,8 +177,11 @@ TEST(advanceColumns, MovesKeepsInsideWallsRemovesThroughOpenSidesAndMarksSplits)
     // Without splitting no column is marked
     columns d(6);
     d.F[0][3] = d.F[3][3] = 2;
-    advanceColumns(g, sides, dt, false, rule, d.motion());
+    columns dLanes(d);
+    d.advanceOneByOne(advance(d, false));
+    dLanes.advanceInLanes(advance(dLanes, false));
     EXPECT_EQ(d.split, std::vector<char>(6, 0));
+    EXPECT_TRUE(dLanes == d);
 }
 
 
