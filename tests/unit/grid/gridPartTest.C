@@ -11,8 +11,10 @@ Description
     mpmGrid sets it for -parallel) sees what the whole domain sees, bit for
     bit: for points anywhere in the part, the stencils' weights, gradients
     and node offsets of every shape function, and the nodes they reach (as
-    domain nodes); the nodal areas at every node of the part; the position
-    of every node; and the domain's geometry recovered from the part.
+    domain nodes), also four particles at once on the part (stencilLanes,
+    against its scalar stencils); the nodal areas at every node of the part;
+    the position of every node; and the domain's geometry recovered from
+    the part.
 
 \*---------------------------------------------------------------------------*/
 
@@ -58,19 +60,25 @@ std::array<int, 2> domainNode(const gridGeometry& p, const int nodei)
 
 
 template<class Kernel>
-void expectSameStencils(const gridGeometry& g, const gridGeometry& p)
+void expectSameStencils
+(
+    const gridGeometry& g,
+    const gridGeometry& p,
+    const Kernel& kernel
+)
 {
     std::mt19937 gen(7);
     std::uniform_real_distribution<double> u(0, 1);
-    const Kernel kernel;
+    double x[4], y[4];
     for (int s = 0; s < 2000; ++s)
     {
         // Inside the part's cells but its outermost (where the particles of
         // another processor's cells stand)
-        const double x = p.lower(0) + p.dx[0]*(1 + (p.nCells[0] - 2)*u(gen));
-        const double y = p.lower(1) + p.dx[1]*(1 + (p.nCells[1] - 2)*u(gen));
-        const stencil<2, Kernel> a(g, kernel, x, y, 0);
-        const stencil<2, Kernel> b(p, kernel, x, y, 0);
+        const int l = s % 4;
+        x[l] = p.lower(0) + p.dx[0]*(1 + (p.nCells[0] - 2)*u(gen));
+        y[l] = p.lower(1) + p.dx[1]*(1 + (p.nCells[1] - 2)*u(gen));
+        const stencil<2, Kernel> a(g, kernel, x[l], y[l], 0);
+        const stencil<2, Kernel> b(p, kernel, x[l], y[l], 0);
         for (int d = 0; d < 2; ++d)
         {
             EXPECT_EQ(a.r0[d], b.r0[d]);
@@ -81,6 +89,27 @@ void expectSameStencils(const gridGeometry& g, const gridGeometry& p)
             }
         }
         EXPECT_EQ(domainNode(g, a.base), domainNode(p, b.base));
+        if (l < 3)
+        {
+            continue;
+        }
+
+        // Four particles at once on the part: its stencils in each lane
+        const stencilLanes<Kernel> lanes(p, kernel, x, y);
+        for (int m = 0; m < 4; ++m)
+        {
+            const stencil<2, Kernel> c(p, kernel, x[m], y[m], 0);
+            EXPECT_EQ(lanes.base[m], c.base);
+            for (int d = 0; d < 2; ++d)
+            {
+                EXPECT_EQ(lanes.r0[d][m], c.r0[d]);
+                for (int k = 0; k < Kernel::width; ++k)
+                {
+                    EXPECT_EQ(lanes.w[d][k][m], c.w[d][k]);
+                    EXPECT_EQ(lanes.dw[d][k][m], c.dw[d][k]);
+                }
+            }
+        }
     }
 }
 
@@ -101,9 +130,9 @@ TEST(gridPart, StencilsAreTheDomainsBitForBit)
         })
     {
         const gridGeometry p = partOf(g, part[0], part[1]);
-        expectSameStencils<linearKernel>(g, p);
-        expectSameStencils<GIMPKernel>(g, p);
-        expectSameStencils<quadraticBSplineKernel>(g, p);
+        expectSameStencils(g, p, linearKernel());
+        expectSameStencils(g, p, GIMPKernel(0.25));
+        expectSameStencils(g, p, quadraticBSplineKernel());
     }
 }
 

@@ -19,7 +19,8 @@ Description
       stress and basal coefficients;
     - the node values that pad the lanes stay +0;
     - the surface gather (S5) against its scalar form, with and without
-      terrain;
+      terrain, for one column (gatherColumn) and over every column four at
+      a time (gatherSurface);
     - the velocity gather of G2P against the generic (any Dim) sum;
     - four particles' stencils at once (stencilLanes) against the scalar
       stencil: weights, gradients, offsets and nodes, for the three shape
@@ -32,8 +33,9 @@ Description
       column one by one: positions, velocities, gradients, footprints and
       the removal and split marks.
     Random columns fill each tile with any number of columns, so that the
-    passes four at a time also end tiles with one to three columns taken
-    one by one.
+    scatters four at a time also end tiles with one to three columns taken
+    one by one; their number is not a multiple of four, so that the passes
+    over every column end so too.
 
 \*---------------------------------------------------------------------------*/
 
@@ -79,7 +81,9 @@ struct laneCase
     {
         std::mt19937 gen(17);
         std::uniform_real_distribution<double> u(0, 1), v(-1, 1);
-        const label n = 4*g.nCellsTotal();
+        // Not a multiple of four: the passes over every column end with
+        // one to three columns taken one by one
+        const label n = 4*g.nCellsTotal() + 3;
         p.append(n);
         for (label i = 0; i < n; ++i)
         {
@@ -319,6 +323,50 @@ void checkSurfaceGather(const Kernel& kernel)
 }
 
 
+//- Every value S5 gives the columns the same in both, bit for bit
+void expectSameSurface(const shallowColumns& cols, const shallowColumns& ref)
+{
+    for (label i = 0; i < cols.n; ++i)
+    {
+        for
+        (
+            const auto& f :
+            {
+                std::make_pair(cols.h, ref.h), {cols.a, ref.a},
+                {cols.kappa, ref.kappa}, {cols.Zb, ref.Zb},
+                {cols.gradZetaX, ref.gradZetaX},
+                {cols.gradZetaY, ref.gradZetaY},
+                {cols.gradZx, ref.gradZx}, {cols.gradZy, ref.gradZy}
+            }
+        )
+        {
+            ASSERT_TRUE(sameBits(f.first[i], f.second[i]))
+                << "column " << i << ": " << f.first[i] << " against "
+                << f.second[i];
+        }
+    }
+}
+
+
+//- gatherSurface (four columns at a time, the last three one by one)
+//  against gatherColumn column by column, each on its own copy of the same
+//  random columns
+template<class Kernel, bool Terrain>
+void checkSurfaceGatherOfAll(const Kernel& kernel)
+{
+    const double hMin = 0.05;
+    laneCase t, r;
+    const shallowColumns cols = t.columns(), ref = r.columns();
+    gatherSurface<Kernel, Terrain>(t.g, kernel, t.grid, cols, hMin, true);
+    for (label i = 0; i < ref.n; ++i)
+    {
+        const stencil<2, Kernel> st(r.g, kernel, ref.x[i], ref.y[i], 0);
+        gatherColumn<Kernel, Terrain>(st, r.grid, ref, i, hMin, true);
+    }
+    expectSameSurface(cols, ref);
+}
+
+
 template<class Kernel>
 void checkVelocityGather(const Kernel& kernel)
 {
@@ -518,24 +566,10 @@ void checkFusedGather(const Kernel& kernel)
         }
     );
 
-    for (label i = 0; i < cols.n; ++i)
+    expectSameSurface(cols, ref);
+    if (::testing::Test::HasFatalFailure())
     {
-        for
-        (
-            const auto& f :
-            {
-                std::make_pair(cols.h, ref.h), {cols.a, ref.a},
-                {cols.kappa, ref.kappa}, {cols.Zb, ref.Zb},
-                {cols.gradZetaX, ref.gradZetaX},
-                {cols.gradZetaY, ref.gradZetaY},
-                {cols.gradZx, ref.gradZx}, {cols.gradZy, ref.gradZy}
-            }
-        )
-        {
-            ASSERT_TRUE(sameBits(f.first[i], f.second[i]))
-                << "column " << i << ": " << f.first[i] << " against "
-                << f.second[i];
-        }
+        return;
     }
     typedef shallowGrid L;
     for (label j = 0; j < nN; ++j)
@@ -610,7 +644,7 @@ void checkGridToColumns(const Kernel& kernel)
     const columnMotion qt = mt.of(t), qr = mr.of(r);
     const label nRemoved = gridToColumns
     (
-        t.g, kernel, vel, qt, columnAdvance(t.g, sides, dt, true, rule, qt)
+        t.g, kernel, vel, columnAdvance(t.g, sides, dt, true, rule, qt)
     );
 
     gridToParticlesVelocity<2>
@@ -689,6 +723,12 @@ TEST(vectorLanes, SurfaceGatherIsTheScalarSumBitForBit)
     checkSurfaceGather<GIMPKernel, false>(gimp());
     checkSurfaceGather<quadraticBSplineKernel, true>(quadraticBSplineKernel());
     checkSurfaceGather<quadraticBSplineKernel, false>(quadraticBSplineKernel());
+    checkSurfaceGatherOfAll<linearKernel, true>(linearKernel());
+    checkSurfaceGatherOfAll<GIMPKernel, false>(gimp());
+    checkSurfaceGatherOfAll<quadraticBSplineKernel, true>
+    (
+        quadraticBSplineKernel()
+    );
 }
 
 

@@ -795,7 +795,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         *shape_,
         [&](const auto& kernel)
         {
-            nRemoved = gridToColumns(g, kernel, vel, motion, advance);
+            nRemoved = gridToColumns(g, kernel, vel, advance);
         }
     );
     const double* m = particles_.component(particleArrays::M);
