@@ -197,25 +197,33 @@ void checkMomentum(const Kernel& kernel)
 }
 
 
-template<class Kernel, bool GradientForm, bool Stress, bool Basal>
-void checkForces(const Kernel& kernel)
+//- The scalar form of the force scatter, column by column in the scatter's
+//  order: the node forces F and basal sums B; before(i, st) runs first for
+//  each column (the fused pass's S5)
+template
+<
+    class Kernel, bool GradientForm, bool Stress, bool Basal, class Before
+>
+void scalarLoads
+(
+    const columnScatter& sc,
+    const Kernel& kernel,
+    const shallowColumns& cols,
+    const double rho,
+    const double gravity,
+    Before&& before,
+    std::vector<double> F[2],
+    std::vector<double> B[3]
+)
 {
-    laneCase t;
-    const columnScatter sc = t.scatter();
-    const shallowColumns cols = t.columns();
-    const double rho = 1800, gravity = 9.81;
-    zeroNodes(t.g, t.nodes, t.grid);
-    scatterForces<Kernel, GradientForm, Stress, Basal>
-    (
-        sc, kernel, t.grid, cols, rho, gravity
-    );
-
-    // The scalar sums, column by column in the same scatter order
-    const label nN = t.g.nNodes();
-    std::vector<double> F[2], B[3];
-    for (std::vector<double>* f : {&F[0], &F[1], &B[0], &B[1], &B[2]})
+    const label nN = sc.g.nNodes();
+    for (int k = 0; k < 2; ++k)
     {
-        f->assign(nN, 0.0);
+        F[k].assign(nN, 0.0);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+        B[k].assign(nN, 0.0);
     }
     sc
     (
@@ -223,6 +231,7 @@ void checkForces(const Kernel& kernel)
         cols,
         [&](const int32_t i, const stencil<2, Kernel>& st)
         {
+            before(i, st);
             const columnLoads c =
                 loadsOf<GradientForm, Stress>(cols, i, rho, gravity);
             st.forEachNode
@@ -253,6 +262,31 @@ void checkForces(const Kernel& kernel)
                 }
             );
         }
+    );
+}
+
+
+template<class Kernel, bool GradientForm, bool Stress, bool Basal>
+void checkForces(const Kernel& kernel)
+{
+    laneCase t;
+    const columnScatter sc = t.scatter();
+    const shallowColumns cols = t.columns();
+    const double rho = 1800, gravity = 9.81;
+    zeroNodes(t.g, t.nodes, t.grid);
+    scatterForces<Kernel, GradientForm, Stress, Basal>
+    (
+        sc, kernel, t.grid, cols, rho, gravity
+    );
+
+    // The scalar sums, column by column in the same scatter order
+    const label nN = t.g.nNodes();
+    std::vector<double> F[2], B[3];
+    scalarLoads<Kernel, GradientForm, Stress, Basal>
+    (
+        sc, kernel, cols, rho, gravity,
+        [](const int32_t, const stencil<2, Kernel>&) {},
+        F, B
     );
 
     typedef shallowGrid L;
@@ -537,33 +571,15 @@ void checkFusedGather(const Kernel& kernel)
     );
 
     const label nN = r.g.nNodes();
-    std::vector<double> F[2];
-    F[0].assign(nN, 0.0);
-    F[1].assign(nN, 0.0);
-    r.scatter()
+    std::vector<double> F[2], B[3];
+    scalarLoads<Kernel, true, false, false>
     (
-        kernel,
-        ref,
+        r.scatter(), kernel, ref, rho, gravity,
         [&](const int32_t i, const stencil<2, Kernel>& st)
         {
             gatherColumn<Kernel, Terrain>(st, r.grid, ref, i, hMin, true);
-            const columnLoads c =
-                loadsOf<true, false>(ref, i, rho, gravity);
-            st.forEachNode
-            (
-                [&]
-                (
-                    const int32_t j,
-                    const double N,
-                    const double* gN,
-                    const double*
-                )
-                {
-                    F[0][j] += N*c.bx + c.pre*gN[0];
-                    F[1][j] += N*c.by + c.pre*gN[1];
-                }
-            );
-        }
+        },
+        F, B
     );
 
     expectSameSurface(cols, ref);
