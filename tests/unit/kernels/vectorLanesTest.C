@@ -225,12 +225,14 @@ void scalarLoads
     {
         B[k].assign(nN, 0.0);
     }
-    sc
+    sc.schedule.scatter
     (
-        kernel,
-        cols,
-        [&](const int32_t i, const stencil<2, Kernel>& st)
+        sc.g,
+        sc.nodes,
+        sc.binStart,
+        [&](const int32_t i)
         {
+            const stencil<2, Kernel> st(sc.g, kernel, cols.x[i], cols.y[i], 0);
             before(i, st);
             const columnLoads c =
                 loadsOf<GradientForm, Stress>(cols, i, rho, gravity);
