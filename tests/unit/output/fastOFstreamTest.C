@@ -12,14 +12,17 @@ Description
     and floats, at precisions 6, 12, 16 and 17; and numbers between words,
     labels, changes of precision, short, uniform and long lists, longer
     than the tape it formats in parallel, labels among the numbers as in
-    a cloud's positions), and counts lines as OFstream
-    does; OpenFOAM's reader reads 200,000 normal doubles within
-    1e+-290 written at exactPrecision back as the same doubles. Point
+    a cloud's positions), and counts lines as OFstream does. A number's
+    text is printf's at every precision from 1 to 17 (the doubles nearest
+    to the midpoints of p-digit numbers, to powers of ten, exact ties,
+    every magnitude). OpenFOAM's reader reads 200,000 normal doubles
+    within 1e+-290 written at exactPrecision back as the same doubles. Point
     fields (scalar and vector; mostly zeros, signed zeros, every magnitude;
     uniform), a cloud's vector field and lists (long, short, empty,
     uniform, of labels) written by
     fastWriteIO and writeList, whose long lists are formatted from memory,
-    are byte for byte OpenFOAM's, in ASCII and binary. A file written
+    are byte for byte OpenFOAM's, in ASCII and binary, and so are lists
+    whose second half repeats (or nearly repeats) the first. A file written
     where a hard link was is a new file: the file linked to is unchanged.
 
 \*---------------------------------------------------------------------------*/
@@ -39,6 +42,8 @@ Description
 #include "IFstream.H"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <unistd.h>
 #include <limits>
@@ -188,6 +193,142 @@ TEST(fastOFstream, MixedContentKeepsItsOrderAcrossTheTape)
         linesFast = os.lineNumber();
     }
     EXPECT_EQ(contents(dir/"mixedFast"), contents(dir/"mixedSlow"));
+    EXPECT_EQ(linesFast, linesSlow);
+}
+
+
+TEST(fastOFstream, NumberTextIsPrintfsAtEveryPrecision)
+{
+    // The numbers that the rounded path is nearest to getting wrong: the
+    // doubles nearest to the midpoints between two p-digit numbers (the
+    // margin's), to powers of ten (the exponent's correction) and to
+    // 9.99...95 (the carry into the next power), exact ties (halves and
+    // quarters), and random doubles of every magnitude
+    const scalarList random(testValues());
+    std::vector<double> values(random.begin(), random.end());
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::uniform_int_distribution<int> exponent(-30, 30);
+    char text[64];
+    for (int i = 0; i < 60000; ++i)
+    {
+        const int digits = 1 + i % 16;
+        std::snprintf
+        (
+            text, sizeof(text), "%.0f5e%d",
+            std::floor(unit(rng)*std::pow(10.0, digits)), exponent(rng)
+        );
+        const double midpoint = std::strtod(text, nullptr);
+        for (const double x : {midpoint, -midpoint})
+        {
+            values.push_back(x);
+            values.push_back(std::nextafter(x, 0.0));
+            values.push_back(std::nextafter(x, 2*x));
+        }
+    }
+    for (int k = -40; k <= 40; ++k)
+    {
+        for (int digits = 1; digits <= 17; ++digits)
+        {
+            const double power = std::pow(10.0, k);
+            const double below = power*(1 - 0.5*std::pow(10.0, -digits));
+            for (const double x : {power, below})
+            {
+                values.push_back(x);
+                values.push_back(std::nextafter(x, 0.0));
+                values.push_back(std::nextafter(x, 2*x));
+            }
+        }
+    }
+    for (int i = 0; i < 4000; ++i)
+    {
+        values.push_back(0.5*i);
+        values.push_back(-0.25*i);
+        values.push_back(i/1024.0);
+    }
+
+    char printed[64], fast[fastOFstream::numberSize];
+    label nDiffer = 0;
+    for (int p = 1; p <= 17; ++p)
+    {
+        for (const double x : values)
+        {
+            const int n = std::snprintf(printed, sizeof(printed), "%.*g", p, x);
+            const int m = fastOFstream::numberText(fast, x, p);
+            if (n != m || std::memcmp(printed, fast, n))
+            {
+                if (++nDiffer <= 5)
+                {
+                    ADD_FAILURE()
+                        << "precision " << p << ": printf "
+                        << std::string(printed, n) << ", numberText "
+                        << std::string(fast, m);
+                }
+            }
+        }
+    }
+    EXPECT_EQ(nDiffer, 0) << "of " << 17*values.size();
+}
+
+
+TEST(fastOFstream, AListThatRepeatsItsFirstHalfIsOpenFOAMs)
+{
+    // The point fields of a one-cell-thick mesh: each value on both layers
+    // of points. And lists that nearly repeat (one value, a signed zero),
+    // of odd length, of vectors
+    const fileName dir(scratchDir("fastOFstream"));
+    mkDir(dir);
+    const scalarList values(testValues());
+    const label half = 5000;
+    scalarList repeated(2*half);
+    vectorField repeatedVectors(2*half);
+    for (label i = 0; i < half; ++i)
+    {
+        const scalar v = i % 3 ? 0 : values[i];
+        repeated[i] = repeated[half + i] = v;
+        repeatedVectors[i] = repeatedVectors[half + i] =
+            vector(v, -v, 1.0/(i + 1));
+    }
+    scalarList nearly(repeated);
+    nearly[2*half - 1] = -nearly[half - 1] - 1;
+    scalarList signedZero(repeated);
+    signedZero[1] = 0;
+    signedZero[half + 1] = -0.0;
+    const scalarList odd(SubList<scalar>(repeated, 2*half - 1));
+
+    auto writeLists = [&](Ostream& os, const bool fast)
+    {
+        os.precision(12);
+        auto write = [&](const auto& list)
+        {
+            if (fast)
+            {
+                fastOFstream::writeList(os, list);
+            }
+            else
+            {
+                os  << list;
+            }
+            os  << nl;
+        };
+        write(repeated);
+        write(repeatedVectors);
+        write(nearly);
+        write(signedZero);
+        write(odd);
+    };
+    label linesSlow, linesFast;
+    {
+        OFstream slow(dir/"halvesSlow");
+        writeLists(slow, false);
+        linesSlow = slow.lineNumber();
+    }
+    {
+        fastOFstream fast(dir/"halvesFast");
+        writeLists(fast, true);
+        linesFast = fast.lineNumber();
+    }
+    EXPECT_EQ(contents(dir/"halvesFast"), contents(dir/"halvesSlow"));
     EXPECT_EQ(linesFast, linesSlow);
 }
 

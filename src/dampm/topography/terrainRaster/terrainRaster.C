@@ -840,14 +840,20 @@ void Foam::terrainRaster::writeAsc(const fileName& file) const
         for (label i = 0; i < nx_; ++i)
         {
             const scalar v = values_[i + nx_*j];
-            const auto res = std::to_chars
-            (
-                buf, buf + sizeof(buf), std::isfinite(v) ? v : writtenNoData
-            );
             if (i)
             {
                 row += ' ';
             }
+            if (v == 0 && !std::signbit(v))
+            {
+                // Most of a hazard map: to_chars' text, without the call
+                row += '0';
+                continue;
+            }
+            const auto res = std::to_chars
+            (
+                buf, buf + sizeof(buf), std::isfinite(v) ? v : writtenNoData
+            );
             row.append(buf, res.ptr);
         }
         row += '\n';
