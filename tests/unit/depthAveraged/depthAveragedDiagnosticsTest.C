@@ -9,8 +9,10 @@ License
 Description
     depthAveragedDiagnostics: the totals of three columns against values
     worked by hand (mass, kinetic energy with the speed along the bed on a
-    sloping bed and without it on a flat one, largest speeds, extent), the
-    same totals on 1 and 2 threads bit for bit, and the non-finite field
+    sloping bed and without it on a flat one, largest speeds, extent), and
+    of 4101 columns (summed four at a time, the last three one by one), the
+    same totals on 1 and 2 threads bit for bit, a column that is not finite
+    found among the four-at-a-time and the last, and the non-finite field
     named.
 
 \*---------------------------------------------------------------------------*/
@@ -89,6 +91,44 @@ TEST(depthAveragedDiagnostics, TotalsOfThreeColumnsMatchTheHandValues)
     EXPECT_EQ(flat.kineticEnergy, 0.5*2*25 + 0.5*1*1);
     EXPECT_EQ(flat.maxSpeed, 5.0);
     EXPECT_EQ(flat.maxHorizontalSpeed, 5.0);
+}
+
+
+TEST(depthAveragedDiagnostics, ManyColumnsSummedFourAtATimeMatchTheHandValues)
+{
+    // The three columns 1367 times (two blocks, their columns four at a
+    // time and the last three one by one), shifted so that each copy's
+    // extent differs: sums of halves and quarters of small numbers, exact
+    // in any order
+    depthAveragedParticles c;
+    const label nCopies = 1367;
+    for (label k = 0; k < nCopies; ++k)
+    {
+        add(c, 1 + k, 2, 2, 3, 4, 0.5, 0);
+        add(c, -3, 5 + k, 1, 0, -1, 0, 2);
+        add(c, 7, -1 - k, 4, 0, 0, 1, 1);
+    }
+    const depthAveragedDiagnostics::totals t =
+        depthAveragedDiagnostics::sum(c.p, c.f, true);
+    EXPECT_EQ(t.mass, 7.0*nCopies);
+    EXPECT_EQ(t.kineticEnergy, (0.5*2*27.25 + 0.5*1*5)*nCopies);
+    EXPECT_EQ(t.maxSpeed, std::sqrt(27.25));
+    EXPECT_EQ(t.maxHorizontalSpeed, 5.0);
+    EXPECT_EQ(t.extent.min(), point(-3, -nCopies, 0));
+    EXPECT_EQ(t.extent.max(), point(nCopies, 5 + nCopies - 1, 0));
+    EXPECT_TRUE(t.finite);
+    EXPECT_EQ(t.nColumns, 3*nCopies);
+
+    // A column that is not finite, among the four-at-a-time and among the
+    // last
+    double* h = c.p.component(c.f.h());
+    for (const label i : {label(2), label(3*nCopies - 1)})
+    {
+        h[i] = std::numeric_limits<double>::infinity();
+        EXPECT_FALSE(depthAveragedDiagnostics::sum(c.p, c.f, true).finite)
+            << "column " << i;
+        h[i] = 1;
+    }
 }
 
 

@@ -12,6 +12,7 @@ License
 #include "staticSwitches.H"
 #include "orderedSums.H"
 #include "processorTotals.H"
+#include <type_traits>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -51,34 +52,43 @@ Foam::depthAveragedDiagnostics::totals Foam::depthAveragedDiagnostics::sum
     const double* gx = particles.component(fields.gradZ());
     const double* gy = particles.component(fields.gradZ() + 1);
 
-    // The same rounding on any number of threads; a flat bed reads no
-    // gradient
+    // The same rounding on any number of threads, four columns at a time;
+    // a flat bed reads no gradient
     double sums[2], maxima[7];
     staticSwitches
     (
         [&](auto onTerrain)
         {
-            orderedSums<2, 7>
+            orderedLaneSums<2, 7>
             (
-                n, sums, maxima, [&](label i, double* S, double* mx)
+                n, sums, maxima, [&](label i, auto* S, auto* mx)
                 {
+                    typedef std::remove_pointer_t<decltype(S)> Real;
+                    const Real xi = loadAt<Real>(x, i);
+                    const Real yi = loadAt<Real>(y, i);
+                    const Real uxi = loadAt<Real>(ux, i);
+                    const Real uyi = loadAt<Real>(uy, i);
+                    const Real mi = loadAt<Real>(m, i);
+
                     // Speed along the bed: the vertical component follows
                     // the terrain
-                    const double w =
-                        onTerrain() ? ux[i]*gx[i] + uy[i]*gy[i] : 0;
-                    const double u2 = ux[i]*ux[i] + uy[i]*uy[i];
-                    const double v2 = u2 + w*w;
-                    S[0] += m[i];
-                    S[1] += 0.5*m[i]*v2;
+                    const Real w = onTerrain()
+                      ? uxi*loadAt<Real>(gx, i) + uyi*loadAt<Real>(gy, i)
+                      : splat<Real>(0);
+                    const Real u2 = uxi*uxi + uyi*uyi;
+                    const Real v2 = u2 + w*w;
+                    S[0] += mi;
+                    S[1] += 0.5*mi*v2;
                     // A NaN or infinity in any of them makes the sum one
-                    const double broken =
-                        std::isfinite(x[i] + y[i] + ux[i] + uy[i] + h[i])
-                      ? 0 : 1;
-                    const double v[7] =
-                        {v2, -x[i], x[i], -y[i], y[i], u2, broken};
+                    const Real broken = select
+                    (
+                        finiteOf(xi + yi + uxi + uyi + loadAt<Real>(h, i)),
+                        splat<Real>(0), splat<Real>(1)
+                    );
+                    const Real v[7] = {v2, -xi, xi, -yi, yi, u2, broken};
                     for (int k = 0; k < 7; ++k)
                     {
-                        mx[k] = v[k] > mx[k] ? v[k] : mx[k];
+                        mx[k] = select(v[k] > mx[k], v[k], mx[k]);
                     }
                 }
             );

@@ -18,6 +18,7 @@ License
 #include "particleMemory.H"
 #include "Time.H"
 #include "fpTrapsHeld.H"
+#include <type_traits>
 #include "HashSet.H"
 #include "HashOps.H"
 #include "OStringStream.H"
@@ -1114,22 +1115,29 @@ Foam::mpm3dFlow::totals Foam::mpm3dFlow::diagnostics() const
     const double* m = particles_.component(particleArrays::M);
     const double g[3] = {settings_.g[0], settings_.g[1], settings_.g[2]};
 
-    // The same rounding on any number of threads
+    // The same rounding on any number of threads, four particles at a time
     double S[6], mx[7];
-    orderedSums<6, 7>(n, S, mx, [&](label i, double* s, double* M)
+    orderedLaneSums<6, 7>(n, S, mx, [&](label i, auto* s, auto* M)
     {
-        const double u2 = u[0][i]*u[0][i] + u[1][i]*u[1][i] + u[2][i]*u[2][i];
-        s[0] += m[i];
-        s[1] += 0.5*m[i]*u2;
-        s[2] -= m[i]*(g[0]*x[0][i] + g[1]*x[1][i] + g[2]*x[2][i]);
-        s[3] += m[i]*u[0][i];
-        s[4] += m[i]*u[1][i];
-        s[5] += m[i]*u[2][i];
-        const double v[7] =
-            {u2, -x[0][i], -x[1][i], -x[2][i], x[0][i], x[1][i], x[2][i]};
+        typedef std::remove_pointer_t<decltype(s)> Real;
+        const Real mi = loadAt<Real>(m, i);
+        Real xi[3], ui[3];
+        for (int d = 0; d < 3; ++d)
+        {
+            xi[d] = loadAt<Real>(x[d], i);
+            ui[d] = loadAt<Real>(u[d], i);
+        }
+        const Real u2 = ui[0]*ui[0] + ui[1]*ui[1] + ui[2]*ui[2];
+        s[0] += mi;
+        s[1] += 0.5*mi*u2;
+        s[2] -= mi*(g[0]*xi[0] + g[1]*xi[1] + g[2]*xi[2]);
+        s[3] += mi*ui[0];
+        s[4] += mi*ui[1];
+        s[5] += mi*ui[2];
+        const Real v[7] = {u2, -xi[0], -xi[1], -xi[2], xi[0], xi[1], xi[2]};
         for (int k = 0; k < 7; ++k)
         {
-            M[k] = v[k] > M[k] ? v[k] : M[k];
+            M[k] = select(v[k] > M[k], v[k], M[k]);
         }
     });
 
