@@ -96,8 +96,8 @@ TEST(depthAveragedDiagnostics, TotalsOfThreeColumnsMatchTheHandValues)
 
 TEST(depthAveragedDiagnostics, ManyColumnsSummedFourAtATimeMatchTheHandValues)
 {
-    // The three columns 1367 times (two blocks, their columns four at a
-    // time and the last three one by one), shifted so that each copy's
+    // The three columns 1367 times (five blocks of 1024 columns, the last
+    // of five: four in lanes and one alone), shifted so that each copy's
     // extent differs: sums of halves and quarters of small numbers, exact
     // in any order
     depthAveragedParticles c;
@@ -121,6 +121,20 @@ TEST(depthAveragedDiagnostics, ManyColumnsSummedFourAtATimeMatchTheHandValues)
 
     // A column that is not finite, among the four-at-a-time and among the
     // last
+    // Every column right of and above the origin: the maxima of -x and -y
+    // are negative (lanes that started at 0 would give an extent from 0)
+    double* x = c.p.component(particleArrays::X);
+    double* y = c.p.component(particleArrays::Y);
+    for (label i = 0; i < 3*nCopies; ++i)
+    {
+        x[i] += 10;
+        y[i] += 10 + nCopies;
+    }
+    const depthAveragedDiagnostics::totals shifted =
+        depthAveragedDiagnostics::sum(c.p, c.f, true);
+    EXPECT_EQ(shifted.extent.min(), point(7, 10, 0));
+    EXPECT_EQ(shifted.extent.max(), point(10 + nCopies, 15 + 2*nCopies - 1, 0));
+
     double* h = c.p.component(c.f.h());
     for (const label i : {label(2), label(3*nCopies - 1)})
     {

@@ -36,13 +36,13 @@ constexpr long double exactPowers[nExactPowers] =
 };
 
 // The longest precision of the rounded path: its product, below
-// 10^16 < 2^54, is within 2^-64 of itself, 2^-10 (and a 17-digit one could
-// be 2^-7 off)
+// 10^16 < 2^53.2, is within 2^-64 of itself, less than 2^-10.8 (a 17-digit
+// one could be 2^-7.5 off)
 constexpr int maxRoundedPrecision = 16;
 
 // How near a rounding midpoint the rounded path leaves a number to
-// std::to_chars: four times its product's largest error (0.4 % of the
-// numbers)
+// std::to_chars: more than three times its product's largest error (0.4 %
+// of the numbers)
 constexpr long double midpointMargin = 1.0L/512;
 
 // The texts of 00 to 99
@@ -153,6 +153,16 @@ inline int generalText
 }
 
 
+//- Does the x87 unit round to its 64-bit significand? Not where its
+//  precision control is set to 53 bits, nor under valgrind, which computes
+//  long doubles as doubles
+bool extendedPrecision()
+{
+    volatile long double one = 1;
+    return one + 0x1p-63L != one;
+}
+
+
 //- The text of val at precision p as printf's %.<p>g, rounded from one
 //  extended-precision product of val and a power of ten: its length, or 0
 //  where that product cannot be sure of the rounding (within
@@ -163,19 +173,19 @@ inline int generalText
 //  expansion; 3e6 doubles of 1e-11 to 1e11, p = 12, this machine).
 inline int roundedText(char* buffer, const double val, const int p)
 {
-    if
-    (
-        std::numeric_limits<long double>::digits < 64
-     || p < 1 || p > maxRoundedPrecision
-     || !std::isnormal(val)
-    )
+    static const bool extended =
+        std::numeric_limits<long double>::digits >= 64
+     && extendedPrecision();
+    if (!extended || p < 1 || p > maxRoundedPrecision || !std::isnormal(val))
     {
         return 0;
     }
     const double a = std::fabs(val);
 
-    // The decimal exponent from the binary one, within one, then
-    // corrected: the scaled number must round to p digits
+    // The decimal exponent from the binary one, floor(e2 log10 2): never
+    // above the number's (checked for every e2), one below it or a carry
+    // (9.99..5 rounding up) corrected: the scaled number must round to p
+    // digits
     std::uint64_t bits;
     std::memcpy(&bits, &a, sizeof(bits));
     int x = ((int(bits >> 52) - 1023)*315653) >> 20;
@@ -196,9 +206,10 @@ inline int roundedText(char* buffer, const double val, const int p)
         }
         if (y < exactPowers[p - 1] - 0.5L)
         {
-            --x;
+            // Not reached: the exponent was not too large
+            return 0;
         }
-        else if (y >= exactPowers[p] - 0.5L)
+        if (y >= exactPowers[p] - 0.5L)
         {
             ++x;
         }
@@ -707,7 +718,11 @@ void Foam::fastOFstream::writeLines
     for (label c = 0; c < nChunks; ++c)
     {
         const label end = std::min(nFormatted, (c + 1)*linesChunk);
-        text[c].reset(new char[lineSize*(end - c*linesChunk)]);
+        // (numberText is given room for any number past the last line)
+        text[c].reset
+        (
+            new char[lineSize*(end - c*linesChunk) + numberSize]
+        );
         char* s = text[c].get();
         for (label i = c*linesChunk; i < end; ++i)
         {
