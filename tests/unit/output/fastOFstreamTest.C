@@ -103,6 +103,22 @@ std::string written
     return contents(file);
 }
 
+//- Write list and a newline, by fastOFstream::writeList (fast) or as
+//  OpenFOAM writes it
+template<class List>
+void writeListLine(Ostream& os, const List& list, const bool fast)
+{
+    if (fast)
+    {
+        fastOFstream::writeList(os, list);
+    }
+    else
+    {
+        os  << list;
+    }
+    os  << nl;
+}
+
 } // End anonymous namespace
 
 
@@ -299,23 +315,13 @@ TEST(fastOFstream, AListThatRepeatsItsFirstHalfIsOpenFOAMs)
     auto writeLists = [&](Ostream& os, const bool fast)
     {
         os.precision(12);
-        auto write = [&](const auto& list)
+        const scalarList* const lists[] =
+            {&repeated, &nearly, &signedZero, &odd};
+        for (const scalarList* list : lists)
         {
-            if (fast)
-            {
-                fastOFstream::writeList(os, list);
-            }
-            else
-            {
-                os  << list;
-            }
-            os  << nl;
-        };
-        write(repeated);
-        write(repeatedVectors);
-        write(nearly);
-        write(signedZero);
-        write(odd);
+            writeListLine(os, *list, fast);
+        }
+        writeListLine(os, repeatedVectors, fast);
     };
     label linesSlow, linesFast;
     {
@@ -445,23 +451,11 @@ TEST(fastOFstream, FieldsAndListsFormattedFromMemoryAreOpenFOAMs)
     const labelList labels(identity(40));
     auto writeLists = [&](Ostream& os, const bool fast)
     {
-        auto write = [&](const auto& list)
-        {
-            if (fast)
-            {
-                fastOFstream::writeList(os, list);
-            }
-            else
-            {
-                os  << list;
-            }
-            os  << nl;
-        };
-        write(longList);
-        write(shortList);
-        write(scalarList());
-        write(uniform);
-        write(labels);
+        writeListLine(os, longList, fast);
+        writeListLine(os, shortList, fast);
+        writeListLine(os, scalarList(), fast);
+        writeListLine(os, uniform, fast);
+        writeListLine(os, labels, fast);
     };
     {
         OFstream slow(dir/"listsSlow");
