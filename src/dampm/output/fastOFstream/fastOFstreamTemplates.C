@@ -28,7 +28,6 @@ void Foam::fastOFstream::writeList(Ostream& os, const UList<T>& list)
      && os.format() == IOstream::ASCII
      && is_contiguous<T>::value
      && std::is_same<typename pTraits<T>::cmptType, double>::value
-     && pTraits<T>::nComponents <= fastOFstream::maxComponents
      && len > Detail::ListPolicy::short_length<T>::value
      && !list.uniform()
     )
