@@ -122,6 +122,18 @@ void Foam::barrierGeometry::deeperThan
 }
 
 
+void Foam::barrierGeometry::firstCrossings
+(
+    const pointField& start,
+    const pointField& end,
+    scalarField& fraction
+) const
+{
+    fraction.setSize(start.size());
+    fraction = -1;
+}
+
+
 void Foam::barrierGeometry::nodeDistances
 (
     const gridGeometry& g,

@@ -289,6 +289,81 @@ void Foam::particleGuard::markEntered
 }
 
 
+void Foam::particleGuard::enterAt(pointField& a, const pointField& b) const
+{
+    constexpr int nHalvings = 30;
+    const scalar before = std::ldexp(1.0, -nHalvings);
+
+    // Where the geometry finds the first crossing (of the surface itself:
+    // the guard's depth is 0), the point 2^-30 of the path before it, kept
+    // when it tests outside (rounding by an edge may put it in)
+    labelList bisect(identity(a.size()));
+    if (guardDepth_ == 0)
+    {
+        scalarField fraction;
+        geometry_.firstCrossings(a, b, fraction);
+        labelList found(a.size());
+        pointField ahead(a.size());
+        label nFound = 0;
+        forAll(a, c)
+        {
+            if (fraction[c] >= 0)
+            {
+                const scalar f = max(fraction[c] - before, scalar(0));
+                ahead[nFound] = a[c] + f*(b[c] - a[c]);
+                found[nFound++] = c;
+            }
+        }
+        found.resize(nFound);
+        ahead.resize(nFound);
+        boolList in;
+        guardInside(ahead, in);
+        label k = 0, nBisect = 0;
+        forAll(a, c)
+        {
+            const bool crossed = k < nFound && found[k] == c;
+            if (crossed && !in[k])
+            {
+                a[c] = ahead[k];
+            }
+            else
+            {
+                bisect[nBisect++] = c;
+            }
+            k += crossed;
+        }
+        bisect.resize(nBisect);
+    }
+
+    // The others: bisection between the start (outside) and the end
+    // (inside), to 2^-30 of the path
+    const label nb = bisect.size();
+    pointField lo(nb), hi(nb), mid(nb);
+    forAll(bisect, k)
+    {
+        lo[k] = a[bisect[k]];
+        hi[k] = b[bisect[k]];
+    }
+    boolList in;
+    for (int iter = 0; iter < nHalvings && nb; ++iter)
+    {
+        forAll(mid, k)
+        {
+            mid[k] = 0.5*(lo[k] + hi[k]);
+        }
+        guardInside(mid, in);
+        forAll(mid, k)
+        {
+            (in[k] ? hi[k] : lo[k]) = mid[k];
+        }
+    }
+    forAll(bisect, k)
+    {
+        a[bisect[k]] = lo[k];
+    }
+}
+
+
 bool Foam::particleGuard::guardReach(const nodeBox& particleNodes)
 {
     // The particles lie between the box's first and last nodes; the cells
@@ -356,23 +431,9 @@ Foam::label Foam::particleGuard::stopEntries
     }
     if (nc)
     {
-        // Where each path entered: bisection between the start (outside,
-        // a) and the end (inside, b), to 2^-30 of the step's move
-        const pointField end(b);
-        pointField mid(nc);
+        // Where each path entered (a: just outside it; b: the end)
+        enterAt(a, b);
         boolList in;
-        for (int iter = 0; iter < 30; ++iter)
-        {
-            forAll(mid, c)
-            {
-                mid[c] = 0.5*(a[c] + b[c]);
-            }
-            guardInside(mid, in);
-            forAll(mid, c)
-            {
-                (in[c] ? b[c] : a[c]) = mid[c];
-            }
-        }
 
         // The entered face's normal, at the point just outside it; the end
         // point projected on that face's tangent plane keeps the motion
@@ -387,7 +448,7 @@ Foam::label Foam::particleGuard::stopEntries
         pointField onFace(nc);
         forAll(onFace, c)
         {
-            onFace[c] = end[c] + ((a[c] - end[c]) & normal[c])*normal[c];
+            onFace[c] = b[c] + ((a[c] - b[c]) & normal[c])*normal[c];
         }
         guardInside(onFace, in);
 

@@ -317,6 +317,32 @@ void Foam::barrierGeometries::triSurfaceGeometry::distance
 }
 
 
+void Foam::barrierGeometries::triSurfaceGeometry::firstCrossings
+(
+    const pointField& start,
+    const pointField& end,
+    scalarField& fraction
+) const
+{
+    // The octree's own line query (its shapes' boxes and tolerance are
+    // built with it: a read-only query). The hit lies on the segment; its
+    // fraction by projection
+    const indexedOctree<treeDataTriSurface>& tree = search_->tree();
+    const label n = start.size();
+    fraction.setSize(n);
+    #pragma omp parallel for schedule(dynamic, 64)
+    for (label i = 0; i < n; ++i)
+    {
+        const vector d(end[i] - start[i]);
+        const scalar d2 = magSqr(d);
+        const pointIndexHit hit = tree.findLine(start[i], end[i]);
+        fraction[i] = hit.hit() && d2 > 0
+            ? min(max(((hit.hitPoint() - start[i]) & d)/d2, scalar(0)), 1)
+            : -1;
+    }
+}
+
+
 void Foam::barrierGeometries::triSurfaceGeometry::inside
 (
     const pointField& points,
