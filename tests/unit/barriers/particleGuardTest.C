@@ -247,7 +247,7 @@ TEST(particleGuard, EnteringParticleStopsOnTheSurfaceFaceItCrossed)
         point x = x1;
         vector v = u, F;
         EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F)) << c.first;
-        // Bisection to 2^-30 of the move
+        // The entry, to 2^-30 of the move
         EXPECT_LT(mag(x - point(0.5, 0.57, 0.875)), 1e-9*mag(x1 - x0))
             << c.first;
         EXPECT_LT(mag(v - c.second), 1e-15) << c.first;
@@ -278,6 +278,49 @@ TEST(particleGuard, PathThroughTwoPartsStopsAtTheFirstItEntered)
     EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F));
     EXPECT_LT(mag(x - point(0.25, 0.65, 0.65)), 1e-9*mag(x1 - x0));
     EXPECT_LT(mag(v - vector(0, 350, 360)), 1e-9);
+}
+
+
+TEST(particleGuard, PathLeavingOnePartIntoAnotherStopsAtTheOther)
+{
+    // From just outside the first cube of twoBoxes.stl (one ulp beyond its
+    // face x = 0.4375, which the path leaves) into the second, entered by
+    // its face y = 0.5625: the crossing next to the start is an exit, not
+    // an entry, so the particle is put back on the second cube's face
+    const surfaceCase surfaces;
+    barrierProbe probe
+    (
+        "type triSurface; file twoBoxes.stl; contact slip;", surfaces.dir()
+    );
+    const point x0(std::nextafter(0.4375, 1.0), 0.3, 0.3), x1(0.7, 0.65, 0.7);
+    ASSERT_GT(probe.distance(x0), 0);
+    ASSERT_LT(probe.distance(x1), 0);
+    point x = x1;
+    vector v = (x1 - x0)/1e-3, F;
+    EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F));
+    EXPECT_LT(mag(x - point(0.7, 0.5625, 0.7)), 1e-9*mag(x1 - x0));
+    EXPECT_GE(probe.distance(x), 0);
+    EXPECT_LT(mag(v - vector((x1 - x0).x(), 0, (x1 - x0).z())/1e-3), 1e-9);
+}
+
+
+TEST(particleGuard, PathFromJustOutsideAFaceStopsAtItsStart)
+{
+    // 1e-12 m above the box's top face (less than 2^-30 of the move from
+    // it) and into it: the start is the entry, and the end point is
+    // projected on the face's plane there
+    const surfaceCase surfaces;
+    barrierProbe probe
+    (
+        "type triSurface; file box.stl; contact slip;", surfaces.dir()
+    );
+    const point x0(0.5, 0.55, 0.875 + 1e-12), x1(0.5, 0.57, 0.8);
+    point x = x1;
+    vector v(0, 20, -75), F;
+    EXPECT_TRUE(probe.entry(x0, x, v, 0.01, 1e-3, F));
+    EXPECT_EQ(x, point(0.5, 0.57, x0.z()));
+    EXPECT_GE(probe.distance(x), 0);
+    EXPECT_EQ(v, vector(0, 20, 0));
 }
 
 
@@ -326,8 +369,8 @@ TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
             {
                 // Put back: on the face it entered (its end point
                 // projected on the face's plane, outside by less than the
-                // move by an edge), or at the entry point (bisection, to
-                // 2^-30 of the move); its velocity into the face removed
+                // move by an edge), or at the entry point (to 2^-30 of the
+                // move); its velocity into the face removed
                 ++nEntered;
                 const scalar moved = mag(x1[i] - x0[i]);
                 const scalar phi = probe.distance(x[t][i]);

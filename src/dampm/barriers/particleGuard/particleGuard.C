@@ -154,8 +154,8 @@ void Foam::particleGuard::guardInside
     boolList& in
 ) const
 {
-    // In chunks, on all threads where the geometry allows: the bisection
-    // of stopEntries queries every entered particle 30 times
+    // In chunks, on all threads where the geometry allows: a bisection in
+    // stopEntries queries each entered particle 30 times
     constexpr label chunk = 1024;
     const label n = points.size();
     const label nChunks = (n + chunk - 1)/chunk;
@@ -289,60 +289,75 @@ void Foam::particleGuard::markEntered
 }
 
 
-void Foam::particleGuard::enterAt(pointField& a, const pointField& b) const
+void Foam::particleGuard::moveToEntries
+(
+    pointField& a,
+    const pointField& b
+) const
 {
     constexpr int nHalvings = 30;
-    const scalar before = std::ldexp(1.0, -nHalvings);
+    const scalar margin = std::ldexp(1.0, -nHalvings);
 
-    // Where the geometry finds the first crossing (of the surface itself:
-    // the guard's depth is 0), the point 2^-30 of the path before it, kept
-    // when it tests outside (rounding by an edge may put it in)
+    // The inside ends of the brackets to bisect: b, or a point of the path
+    // known to be inside
+    pointField inEnd(b);
     labelList bisect(identity(a.size()));
-    if (guardDepth_ == 0)
+    if (!(guardDepth_ > 0))
     {
+        // Where the geometry finds the path entering (the surface itself:
+        // no guard depth), the point 2^-30 of the path before it, kept when
+        // it tests outside; a itself when the entry is nearer (a tested
+        // outside). Rounding by an edge may put the point inside: it then
+        // closes the bracket, so the bisection stays on the first part
         scalarField fraction;
         geometry_.firstCrossings(a, b, fraction);
-        labelList found(a.size());
-        pointField ahead(a.size());
-        label nFound = 0;
+        labelList atEntry(a.size());
+        pointField justOutside(a.size());
+        label nAt = 0;
         forAll(a, c)
         {
-            if (fraction[c] >= 0)
+            if (fraction[c] > margin)
             {
-                const scalar f = max(fraction[c] - before, scalar(0));
-                ahead[nFound] = a[c] + f*(b[c] - a[c]);
-                found[nFound++] = c;
+                justOutside[nAt] = a[c] + (fraction[c] - margin)*(b[c] - a[c]);
+                atEntry[nAt++] = c;
             }
         }
-        found.resize(nFound);
-        ahead.resize(nFound);
+        atEntry.resize(nAt);
+        justOutside.resize(nAt);
         boolList in;
-        guardInside(ahead, in);
+        guardInside(justOutside, in);
         label k = 0, nBisect = 0;
         forAll(a, c)
         {
-            const bool crossed = k < nFound && found[k] == c;
-            if (crossed && !in[k])
+            if (k < nAt && atEntry[k] == c)
             {
-                a[c] = ahead[k];
+                if (in[k])
+                {
+                    inEnd[c] = justOutside[k];
+                    bisect[nBisect++] = c;
+                }
+                else
+                {
+                    a[c] = justOutside[k];
+                }
+                ++k;
             }
-            else
+            else if (fraction[c] < 0)
             {
                 bisect[nBisect++] = c;
             }
-            k += crossed;
         }
         bisect.resize(nBisect);
     }
 
-    // The others: bisection between the start (outside) and the end
-    // (inside), to 2^-30 of the path
+    // The others: bisection between the start (outside) and the inside
+    // end, to 2^-30 of the path
     const label nb = bisect.size();
     pointField lo(nb), hi(nb), mid(nb);
     forAll(bisect, k)
     {
         lo[k] = a[bisect[k]];
-        hi[k] = b[bisect[k]];
+        hi[k] = inEnd[bisect[k]];
     }
     boolList in;
     for (int iter = 0; iter < nHalvings && nb; ++iter)
@@ -432,7 +447,7 @@ Foam::label Foam::particleGuard::stopEntries
     if (nc)
     {
         // Where each path entered (a: just outside it; b: the end)
-        enterAt(a, b);
+        moveToEntries(a, b);
         boolList in;
 
         // The entered face's normal, at the point just outside it; the end

@@ -324,9 +324,15 @@ void Foam::barrierGeometries::triSurfaceGeometry::firstCrossings
     scalarField& fraction
 ) const
 {
-    // The octree's own line query (its shapes' boxes and tolerance are
-    // built with it: a read-only query). The hit lies on the segment; its
-    // fraction by projection
+    // The octree's own line query: its nearest triangle crossed, in the
+    // octree's tree built with the surface, read only (as distance(), it
+    // leaves the static perturbation tolerance alone; its rare "stuck"
+    // diagnosis writes to the log unsynchronised, and answers a miss). The
+    // triangle test takes any crossing of the line within a tolerance of
+    // the segment, and either way: a hit counts only where the path enters
+    // the solid (an exit next to the start of a path along a concave
+    // corner, say, is no entry: the guard then bisects), at its fraction
+    // of the segment by projection, clamped to it
     const indexedOctree<treeDataTriSurface>& tree = search_->tree();
     const label n = start.size();
     fraction.setSize(n);
@@ -336,9 +342,10 @@ void Foam::barrierGeometries::triSurfaceGeometry::firstCrossings
         const vector d(end[i] - start[i]);
         const scalar d2 = magSqr(d);
         const pointIndexHit hit = tree.findLine(start[i], end[i]);
-        fraction[i] = hit.hit() && d2 > 0
-            ? min(max(((hit.hitPoint() - start[i]) & d)/d2, scalar(0)), 1)
-            : -1;
+        const bool enters =
+            hit.hit() && d2 > 0 && (outwardNormal_[hit.index()] & d) < 0;
+        const scalar f = enters ? ((hit.hitPoint() - start[i]) & d)/d2 : -1;
+        fraction[i] = enters ? min(max(f, scalar(0)), scalar(1)) : f;
     }
 }
 
