@@ -4,10 +4,10 @@ plots shared by benchmarks/accuracyVsTime/ritter and .../mangeney.
 Each sub-study's Allrun runs dampmFoam and shallowWaterFoam one case after
 the other and appends a line per run to <work>/runs.dat:
 
-    solver shape ppc nx dx wallTime cpuTime case
+    solver shape ppc co nx dx wallTime cpuTime case
 
-(wallTime: elapsed seconds of the solver alone, cpuTime: its user + system
-seconds). Its accuracyTable script describes the problem (a Problem below)
+(co: the Courant number of the time step; wallTime: elapsed seconds of the
+solver alone, cpuTime: its user + system seconds). Its accuracyTable script describes the problem (a Problem below)
 and calls study(), which reads each case's h at the end time, computes
 
 - L1: sum |h - h_exact| dx / (h0 L) over the compared part of the channel,
@@ -133,18 +133,27 @@ def readRuns(work):
         for line in f:
             if line.startswith("#") or not line.strip():
                 continue
-            solver, shape, ppc, nx, dx, wall, cpu, case = line.split()
-            runs.append(dict(solver=solver, shape=shape, ppc=int(ppc) if ppc != "-" else 0, nx=int(nx), dx=float(dx),
-                             wall=float(wall), cpu=float(cpu), case=case))
+            solver, shape, ppc, co, nx, dx, wall, cpu, case = line.split()
+            runs.append(dict(solver=solver, shape=shape, ppc=int(ppc) if ppc != "-" else 0, co=float(co), nx=int(nx),
+                             dx=float(dx), wall=float(wall), cpu=float(cpu), case=case))
     return runs
 
 
 def readFailed(work):
-    """Lines of work/failed.dat (runs that stopped), split."""
+    """Runs of work/failed.dat (runs that stopped), with the last time they
+    reached (lastTime, "-" when none) and infinite errors."""
     path = os.path.join(work, "failed.dat")
     if not os.path.isfile(path):
         return []
-    return [line.split() for line in open(path) if line.strip() and not line.startswith("#")]
+    failed = []
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        f = line.split()
+        failed.append(dict(solver=f[0], shape=f[1], ppc=int(f[2]) if f[2] != "-" else 0, co=float(f[3]),
+                           nx=int(f[4]), dx=float(f[5]), wall=float(f[6]), cpu=float(f[7]), case=f[8],
+                           lastTime=f[9] if len(f) > 9 else "-", l1=float("inf"), front=float("inf")))
+    return failed
 
 
 def profile(run, problem):
@@ -195,12 +204,14 @@ def metrics(run, problem):
 # Table, orders, cheapest settings, plots ---------------------------------------
 
 def seriesKey(r):
-    return (r["solver"], r["shape"], r["ppc"])
+    return (r["solver"], r["shape"], r["ppc"], r["co"])
 
 
 def seriesLabel(key):
-    solver, shape, ppc = key
-    return "shallowWaterFoam" if solver == "shallowWaterFoam" else "%s, %d ppc" % (shape, ppc)
+    solver, shape, ppc, co = key
+    if solver == "shallowWaterFoam":
+        return "shallowWaterFoam, Co %g" % co
+    return "%s, %d ppc, Co %g" % (shape, ppc, co)
 
 
 def order(rows, metric):
@@ -218,7 +229,7 @@ def fmtTime(s):
 
 
 def setting(r):
-    what = "%d cells (dx %g m)" % (r["nx"], r["dx"])
+    what = "%d cells (dx %g m), Co %g" % (r["nx"], r["dx"], r["co"])
     if r["solver"] == "dampmFoam":
         what = "%s, %d ppc, %s" % (r["shape"], r["ppc"], what)
     return what
@@ -241,10 +252,8 @@ def cheapestStaying(runs, failed, metric, tol, solver):
     the same series also has |error| <= tol (a lucky crossing of a sign
     change does not count, nor does a failed run), else "none"."""
     found = []
-    bad = [dict(solver=f[0], shape=f[1], ppc=int(f[2]), nx=int(f[3]), dx=float(f[4]),
-                l1=float("inf"), front=float("inf")) for f in failed]
     for key in {seriesKey(r) for r in runs if r["solver"] == solver}:
-        rows = sorted([r for r in runs + bad if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True)
+        rows = sorted([r for r in runs + failed if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True)
         for k in range(len(rows)):
             if all(abs(r[metric]) <= tol for r in rows[k:]):
                 found.append(rows[k])
@@ -256,18 +265,22 @@ def cheapestStaying(runs, failed, metric, tol, solver):
 
 
 def plot(runs, metric, ylabel, path, title):
-    fig, ax = plt.subplots(figsize=(7.5, 5))
+    many = len({seriesKey(r) for r in runs}) > 12
+    fig, ax = plt.subplots(figsize=(10.5, 5.5) if many else (7.5, 5))
     colours = {"quadraticBSpline": "tab:blue", "GIMP": "tab:orange", "linear": "tab:green"}
     markers = {1: "v", 2: "o", 3: "s", 4: "D"}
-    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[1], k[2]))
+    styles = ("-", "--", ":", "-.")
+    courants = sorted({r["co"] for r in runs})
+    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
     for key in keys:
         rows = sorted([r for r in runs if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True)
         t = [r["wall"] for r in rows]
         e = [max(abs(r[metric]), 1e-5) for r in rows]
+        style = styles[courants.index(key[3]) % len(styles)]
         if key[0] == "shallowWaterFoam":
-            ax.loglog(t, e, "k-x", lw=2, ms=8, label=seriesLabel(key))
+            ax.loglog(t, e, "k" + style, marker="x", lw=2, ms=8, label=seriesLabel(key))
         else:
-            ax.loglog(t, e, "-", color=colours.get(key[1], "tab:grey"), marker=markers.get(key[2], "^"),
+            ax.loglog(t, e, style, color=colours.get(key[1], "tab:grey"), marker=markers.get(key[2], "^"),
                       ms=5, lw=1, alpha=0.85, label=seriesLabel(key))
     for tol in THRESHOLDS:
         ax.axhline(tol, color="grey", lw=0.7, ls=":")
@@ -275,7 +288,11 @@ def plot(runs, metric, ylabel, path, title):
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, ncol=2)
+    if many:
+        # (beside the axes: the series fill them)
+        ax.legend(fontsize=6, ncol=1, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    else:
+        ax.legend(fontsize=7, ncol=2)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -292,26 +309,27 @@ def study(problem, work, out, note):
     with open(os.path.join(out, "metrics.dat"), "w") as f:
         f.write("# %s: one line per run; wallTime [s] elapsed, cpuTime [s] user+system\n" % problem.title)
         f.write("# front: relative to the distance travelled; frontMetres: x_f - x_f,exact [m]\n")
-        f.write("# solver shape ppc nx dx wallTime cpuTime L1 front frontMetres\n")
+        f.write("# co: Courant number of the time step\n")
+        f.write("# solver shape ppc co nx dx wallTime cpuTime L1 front frontMetres\n")
         for r in runs:
-            f.write("%s %s %d %d %.6g %.4f %.4f %.6e %.6e %.6e\n" % (
-                r["solver"], r["shape"], r["ppc"], r["nx"], r["dx"], r["wall"], r["cpu"], r["l1"], r["front"],
-                r["frontMetres"]))
+            f.write("%s %s %d %g %d %.6g %.4f %.4f %.6e %.6e %.6e\n" % (
+                r["solver"], r["shape"], r["ppc"], r["co"], r["nx"], r["dx"], r["wall"], r["cpu"], r["l1"],
+                r["front"], r["frontMetres"]))
 
     plot(runs, "l1", "L1 error of h / (h0 L)", os.path.join(out, "l1VsTime.png"), problem.title + ": L1 error")
     plot(runs, "front", "|front error| / distance travelled", os.path.join(out, "frontVsTime.png"),
          problem.title + ": 1 % front")
 
     failed = readFailed(work)
-    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[1], k[2]))
+    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
     lines = ["## %s" % problem.title, "", note, "",
-             "| solver | shape | ppc | cells | dx [m] | wall time [s] | CPU time [s] | L1 | front error |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| solver | shape | ppc | Co | cells | dx [m] | wall time [s] | CPU time [s] | L1 | front error |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for key in keys:
         for r in sorted([r for r in runs if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True):
-            lines.append("| %s | %s | %s | %d | %g | %s | %s | %.2e | %+.2f %% |" % (
+            lines.append("| %s | %s | %s | %g | %d | %g | %s | %s | %.2e | %+.2f %% |" % (
                 r["solver"], r["shape"] if r["solver"] == "dampmFoam" else "-",
-                r["ppc"] if r["solver"] == "dampmFoam" else "-", r["nx"], r["dx"], fmtTime(r["wall"]),
+                r["ppc"] if r["solver"] == "dampmFoam" else "-", r["co"], r["nx"], r["dx"], fmtTime(r["wall"]),
                 fmtTime(r["cpu"]), r["l1"], 100 * r["front"]))
     lines += ["", "Observed orders of convergence (least-squares slope of log error against log dx, per series;"
               " the front from |front error|):", "",
@@ -333,8 +351,8 @@ def study(problem, work, out, note):
     if failed:
         lines += ["", "Runs that failed (not in the table, the fits or the plots):", ""]
         for f in failed:
-            lines.append("- dampmFoam %s, %s ppc, %s cells (dx %s m): stopped at t = %s s after %s s (log: %s)"
-                         % (f[1], f[2], f[3], f[4], f[8], fmtTime(float(f[5])), os.path.basename(f[7])))
+            lines.append("- %s, %s: stopped at t = %s s after %s s (log: %s)"
+                         % (f["solver"], setting(f), f["lastTime"], fmtTime(f["wall"]), os.path.basename(f["case"])))
     lines += ["", "![L1 error against wall time](l1VsTime.png)", "",
               "![front error against wall time](frontVsTime.png)", ""]
     with open(os.path.join(out, "results.md"), "w") as f:
