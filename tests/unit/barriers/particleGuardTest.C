@@ -79,6 +79,36 @@ std::string terrain(const std::string& Z)
 const double norm = std::sqrt(1 + 0.04 + 0.01);
 const vector nt = vector(-0.2, 0.1, 1)/norm;
 
+
+//- n particles within 0.1 m of the box of surfaceCase.H, (0.375 0.375
+//  0.25)-(0.625 0.75 0.875), moved by up to about a cell in a step of
+//  1 ms: start x0, end x1, velocity v0 (random, from seed)
+void movesAroundTheBox
+(
+    const label n,
+    const unsigned seed,
+    pointField& x0,
+    pointField& x1,
+    vectorField& v0
+)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    x0.setSize(n);
+    x1.setSize(n);
+    v0.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        x0[i] = point
+        (
+            0.5 + 0.225*u(rng), 0.5625 + 0.2875*u(rng), 0.5625 + 0.4125*u(rng)
+        );
+        const vector move(0.06*u(rng), 0.09*u(rng), 0.12*u(rng));
+        x1[i] = x0[i] + move;
+        v0[i] = move/1e-3;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -328,22 +358,9 @@ TEST(particleGuard, ManyParticlesEnteringASurfaceOnTwoThreadsAsOnOne)
 {
     const surfaceCase surfaces;
     constexpr label n = 40000;
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> u(-1, 1);
-    pointField x0(n), x1(n);
-    vectorField v0(n);
-    for (label i = 0; i < n; ++i)
-    {
-        // Within 0.1 m of the box (0.375 0.375 0.25)-(0.625 0.75 0.875);
-        // moved by up to about a cell
-        x0[i] = point
-        (
-            0.5 + 0.225*u(rng), 0.5625 + 0.2875*u(rng), 0.5625 + 0.4125*u(rng)
-        );
-        const vector move(0.06*u(rng), 0.09*u(rng), 0.12*u(rng));
-        x1[i] = x0[i] + move;
-        v0[i] = move/1e-3;
-    }
+    pointField x0, x1;
+    vectorField v0;
+    movesAroundTheBox(n, 11, x0, x1, v0);
 
     pointField x[2] = {x1, x1};
     vectorField v[2] = {v0, v0};
@@ -405,20 +422,9 @@ TEST(particleGuardBenchmark, EntriesThroughASurfacePerSecond)
     // a cell of it moved by up to a cell, one thread, best of 5
     const surfaceCase surfaces;
     constexpr label n = 40000;
-    std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> u(-1, 1);
-    pointField x0(n), x1(n);
-    vectorField v0(n);
-    for (label i = 0; i < n; ++i)
-    {
-        x0[i] = point
-        (
-            0.5 + 0.225*u(rng), 0.5625 + 0.2875*u(rng), 0.5625 + 0.4125*u(rng)
-        );
-        const vector move(0.06*u(rng), 0.09*u(rng), 0.12*u(rng));
-        x1[i] = x0[i] + move;
-        v0[i] = move/1e-3;
-    }
+    pointField x0, x1;
+    vectorField v0;
+    movesAroundTheBox(n, 5, x0, x1, v0);
     barrierProbe probe
     (
         "type triSurface; file box.stl; contact slip;", surfaces.dir()
