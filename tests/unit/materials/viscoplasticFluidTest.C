@@ -330,4 +330,48 @@ TEST(viscoplasticFluid, UpdateOfManyParticlesIsTheTensorFormula)
 }
 
 
+TEST(viscoplasticFluid, ParticleTurnedInsideOutStopsTheRunWithAMessage)
+{
+    // A particle whose volume ratio went through zero in a step (J = -0,
+    // or a large negative J: seen where a step too long crushed a particle
+    // against a barrier) has no pressure: the update stops with a
+    // FatalError naming it and the cure, not a floating-point signal or a
+    // pressure of 1/0. Among 200 particles (four blocks), the others valid
+    autoPtr<materialModel> fluid
+    (
+        materialModel::New
+        (
+            materialDict("Bingham", tait + " mu 50; tauY 2000;")
+        )
+    );
+    for (const double J : {-0.0, 0.0, -57076.0, 1e-40})
+    {
+        materialState state(*fluid, 200);
+        for (label i = 0; i < 200; ++i)
+        {
+            state.setJ(i, 0.99);
+        }
+        state.setJ(137, J);
+        std::string message;
+        try
+        {
+            state.update(*fluid, 1e-3);
+        }
+        catch (const Foam::error& err)
+        {
+            message = err.message();
+        }
+        EXPECT_NE(message.find("particle 137"), std::string::npos) << J;
+        EXPECT_NE(message.find("lower maxCo"), std::string::npos) << J;
+    }
+
+    // At the smallest J taken, the pressure is finite
+    materialState state(*fluid, 1);
+    state.setJ(0, 2e-30);
+    state.update(*fluid, 1e-3);
+    EXPECT_TRUE(std::isfinite(state.p(0)));
+    EXPECT_GT(state.p(0), 1e200);
+}
+
+
 // ************************************************************************* //

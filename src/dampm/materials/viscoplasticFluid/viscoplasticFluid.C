@@ -122,7 +122,7 @@ Foam::scalar Foam::materialModels::viscoplasticFluid::restJ
 
 
 template<bool Maxwell>
-void Foam::materialModels::viscoplasticFluid::updateBlock
+Foam::label Foam::materialModels::viscoplasticFluid::updateBlock
 (
     const materialParticles& mp,
     const label first,
@@ -161,12 +161,18 @@ void Foam::materialModels::viscoplasticFluid::updateBlock
     alignas(64) double twoMu[blockSize];
     alignas(64) double decay[blockSize];
     alignas(64) double pressureOf[blockSize];
+    label nInverted = 0;
     for (label k = 0; k < n; ++k)
     {
         const double mu = viscosity_(gammaDot[k]);
         twoMu[k] = 2*mu;
         decay[k] = Maxwell && mu > 0 ? std::exp(-G_*dt/mu) : 0;
-        pressureOf[k] = pressure(mp.J[first + k]);
+        // (A J not above minJ, or not a number: its pressure would divide
+        // by zero; the caller stops the run)
+        const double J = mp.J[first + k];
+        const bool valid = J > minJ;
+        nInverted += !valid;
+        pressureOf[k] = valid ? pressure(J) : 0;
     }
 
     // The stress: 2 mu D, with a Maxwell element relaxed towards it from
@@ -219,31 +225,62 @@ void Foam::materialModels::viscoplasticFluid::updateBlock
         }
         mp.p[i] = -(s[0] + s[3] + s[5])/3;
     }
+    return nInverted;
+}
+
+
+void Foam::materialModels::viscoplasticFluid::inverted
+(
+    const particleArrays& particles,
+    const materialParticles& mp
+) const
+{
+    label i = 0;
+    while (i < mp.n - 1 && mp.J[i] > minJ)
+    {
+        ++i;
+    }
+    const double* x[3];
+    for (int d = 0; d < 3; ++d)
+    {
+        x[d] = particles.component(particleArrays::X + d);
+    }
+    FatalErrorInFunction
+        << "particle " << i << " at (" << x[0][i] << " " << x[1][i] << " "
+        << x[2][i] << ") has been compressed to a volume ratio J = "
+        << mp.J[i] << " in one step: its volume went through zero, which no"
+        << " material survives. The step is too long for the flow there;"
+        << " lower maxCo in system/controlDict (the stable step of a"
+        << " weakly compressible fluid is about 0.4 of a cell over the wave"
+        << " speed). The last time directory written is intact: restart"
+        << " from it" << exit(FatalError);
+    std::abort();  // (not reached)
 }
 
 
 void Foam::materialModels::viscoplasticFluid::updateStress
 (
-    particleArrays&,
+    particleArrays& particles,
     const materialParticles& mp,
     const scalar dt
 ) const
 {
     const label nBlocks = (mp.n + blockSize - 1)/blockSize;
 
-    #pragma omp parallel for schedule(static)
+    label nInverted = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nInverted)
     for (label blocki = 0; blocki < nBlocks; ++blocki)
     {
         const label first = blocki*blockSize;
         const label n = min(label(blockSize), mp.n - first);
-        if (G_ > 0)
-        {
-            updateBlock<true>(mp, first, n, dt);
-        }
-        else
-        {
-            updateBlock<false>(mp, first, n, dt);
-        }
+        nInverted +=
+            G_ > 0
+          ? updateBlock<true>(mp, first, n, dt)
+          : updateBlock<false>(mp, first, n, dt);
+    }
+    if (nInverted)
+    {
+        inverted(particles, mp);
     }
 }
 
