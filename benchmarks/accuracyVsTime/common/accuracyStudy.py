@@ -224,6 +224,10 @@ def order(rows, metric):
     return float(np.polyfit(np.log(dx), np.log(e), 1)[0])
 
 
+def fmtOrder(p):
+    return "-" if math.isnan(p) else "%.2f" % p
+
+
 def fmtTime(s):
     return "%.2f" % s if s < 10 else "%.1f" % s
 
@@ -235,13 +239,21 @@ def setting(r):
     return what
 
 
+def cost(r):
+    """Order of the cheapest: wall time, then the coarser grid, then the
+    series (ties resolved the same way on every run)."""
+    return (r["wall"], -r["dx"], seriesKey(r))
+
+
 def cheapest(runs, metric, tol, solver):
     """The least wall time of a solver's runs with |error| <= tol, else the
     best error reached."""
     pool = [r for r in runs if r["solver"] == solver]
+    if not pool:
+        return "no run completed"
     ok = [r for r in pool if abs(r[metric]) <= tol]
     if ok:
-        r = min(ok, key=lambda r: r["wall"])
+        r = min(ok, key=cost)
         return "%s: %s s (%+.2g %%)" % (setting(r), fmtTime(r["wall"]), 100 * r[metric])
     best = min(pool, key=lambda r: abs(r[metric]))
     return "none reached (best %+.2g %%: %s, %s s)" % (100 * best[metric], setting(best), fmtTime(best["wall"]))
@@ -250,9 +262,10 @@ def cheapest(runs, metric, tol, solver):
 def cheapestStaying(runs, failed, metric, tol, solver):
     """The least wall time of a solver's runs from which every finer grid of
     the same series also has |error| <= tol (a lucky crossing of a sign
-    change does not count, nor does a failed run), else "none"."""
+    change does not count, nor does a failed run), else "none". A run on
+    the finest grid has no finer grid to stay on: it is marked so."""
     found = []
-    for key in {seriesKey(r) for r in runs if r["solver"] == solver}:
+    for key in sorted({seriesKey(r) for r in runs if r["solver"] == solver}):
         rows = sorted([r for r in runs + failed if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True)
         for k in range(len(rows)):
             if all(abs(r[metric]) <= tol for r in rows[k:]):
@@ -260,8 +273,9 @@ def cheapestStaying(runs, failed, metric, tol, solver):
                 break
     if not found:
         return "none"
-    r = min(found, key=lambda r: r["wall"])
-    return "%s: %s s" % (setting(r), fmtTime(r["wall"]))
+    r = min(found, key=cost)
+    finest = min(x["dx"] for x in runs + failed if x["solver"] == solver)
+    return "%s: %s s%s" % (setting(r), fmtTime(r["wall"]), " (finest grid only)" if r["dx"] == finest else "")
 
 
 def plot(runs, metric, ylabel, path, title):
@@ -269,7 +283,7 @@ def plot(runs, metric, ylabel, path, title):
     fig, ax = plt.subplots(figsize=(10.5, 5.5) if many else (7.5, 5))
     colours = {"quadraticBSpline": "tab:blue", "GIMP": "tab:orange", "linear": "tab:green"}
     markers = {1: "v", 2: "o", 3: "s", 4: "D"}
-    styles = ("-", "--", ":", "-.")
+    styles = ("-", "--", "-.", (0, (1, 1)))  # (the tolerances' lines are dotted)
     courants = sorted({r["co"] for r in runs})
     keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
     for key in keys:
@@ -278,9 +292,9 @@ def plot(runs, metric, ylabel, path, title):
         e = [max(abs(r[metric]), 1e-5) for r in rows]
         style = styles[courants.index(key[3]) % len(styles)]
         if key[0] == "shallowWaterFoam":
-            ax.loglog(t, e, "k" + style, marker="x", lw=2, ms=8, label=seriesLabel(key))
+            ax.loglog(t, e, color="k", linestyle=style, marker="x", lw=2, ms=8, label=seriesLabel(key))
         else:
-            ax.loglog(t, e, style, color=colours.get(key[1], "tab:grey"), marker=markers.get(key[2], "^"),
+            ax.loglog(t, e, linestyle=style, color=colours.get(key[1], "tab:grey"), marker=markers.get(key[2], "^"),
                       ms=5, lw=1, alpha=0.85, label=seriesLabel(key))
     for tol in THRESHOLDS:
         ax.axhline(tol, color="grey", lw=0.7, ls=":")
@@ -336,7 +350,7 @@ def study(problem, work, out, note):
               "| series | L1 order | front order |", "|---|---|---|"]
     for key in keys:
         rows = [r for r in runs if seriesKey(r) == key]
-        lines.append("| %s | %.2f | %.2f |" % (seriesLabel(key), order(rows, "l1"), order(rows, "front")))
+        lines.append("| %s | %s | %s |" % (seriesLabel(key), fmtOrder(order(rows, "l1")), fmtOrder(order(rows, "front"))))
     lines += ["", "Cheapest setting (least wall time) that reaches each error; below it, the cheapest from which every"
               " finer grid of the same series stays within it (the front error changes sign with dx, so a single"
               " run can meet a tolerance by luck):", "",
