@@ -252,8 +252,8 @@ void Foam::materialModels::viscoplasticFluid::inverted
         << " material survives. The step is too long for the flow there;"
         << " lower maxCo in system/controlDict (the stable step of a"
         << " weakly compressible fluid is about 0.4 of a cell over the wave"
-        << " speed). The last time directory written is intact: restart"
-        << " from it" << exit(FatalError);
+        << " speed). Nothing is written for this step: restart from the"
+        << " latest time directory written completely" << exit(FatalError);
     std::abort();  // (not reached)
 }
 
