@@ -278,14 +278,20 @@ def cheapestStaying(runs, failed, metric, tol, solver):
     return "%s: %s s%s" % (setting(r), fmtTime(r["wall"]), " (finest grid only)" if r["dx"] == finest else "")
 
 
+def orderedSeries(runs):
+    """The series of the runs: dampmFoam's first, by Courant number, shape
+    and ppc, then shallowWaterFoam's."""
+    return sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
+
+
 def plot(runs, metric, ylabel, path, title):
-    many = len({seriesKey(r) for r in runs}) > 12
+    keys = orderedSeries(runs)
+    many = len(keys) > 12
     fig, ax = plt.subplots(figsize=(10.5, 5.5) if many else (7.5, 5))
     colours = {"quadraticBSpline": "tab:blue", "GIMP": "tab:orange", "linear": "tab:green"}
     markers = {1: "v", 2: "o", 3: "s", 4: "D"}
     styles = ("-", "--", "-.", (0, (1, 1)))  # (the tolerances' lines are dotted)
     courants = sorted({r["co"] for r in runs})
-    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
     for key in keys:
         rows = sorted([r for r in runs if seriesKey(r) == key], key=lambda r: r["dx"], reverse=True)
         t = [r["wall"] for r in rows]
@@ -335,7 +341,7 @@ def study(problem, work, out, note):
          problem.title + ": 1 % front")
 
     failed = readFailed(work)
-    keys = sorted({seriesKey(r) for r in runs}, key=lambda k: (k[0] != "dampmFoam", k[3], k[1], k[2]))
+    keys = orderedSeries(runs)
     lines = ["## %s" % problem.title, "", note, "",
              "| solver | shape | ppc | Co | cells | dx [m] | wall time [s] | CPU time [s] | L1 | front error |",
              "|---|---|---|---|---|---|---|---|---|---|"]

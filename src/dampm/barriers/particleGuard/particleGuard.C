@@ -298,83 +298,71 @@ void Foam::particleGuard::moveToEntries
     constexpr int nHalvings = 30;
     const scalar margin = std::ldexp(1.0, -nHalvings);
 
-    // The inside ends of the brackets to bisect: b, or a point of the path
-    // known to be inside
-    pointField inEnd(b);
-    labelList bisect(identity(a.size()));
+    // Where the geometry finds the path entering (of the surface itself:
+    // not with a guard depth), the point 2^-30 of the path before it, kept
+    // when it tests outside; a itself when the entry is nearer (a tested
+    // outside)
+    scalarField fraction(a.size(), -1);
     if (!(guardDepth_ > 0))
     {
-        // Where the geometry finds the path entering (the surface itself:
-        // no guard depth), the point 2^-30 of the path before it, kept when
-        // it tests outside; a itself when the entry is nearer (a tested
-        // outside). Rounding by an edge may put the point inside: it then
-        // closes the bracket, so the bisection stays on the first part
-        scalarField fraction;
         geometry_.firstCrossings(a, b, fraction);
-        labelList atEntry(a.size());
-        pointField justOutside(a.size());
-        label nAt = 0;
-        forAll(a, c)
+    }
+    labelList atEntry(a.size());
+    pointField justOutside(a.size());
+    label nAt = 0;
+    forAll(a, c)
+    {
+        if (fraction[c] > margin)
         {
-            if (fraction[c] > margin)
-            {
-                justOutside[nAt] = a[c] + (fraction[c] - margin)*(b[c] - a[c]);
-                atEntry[nAt++] = c;
-            }
+            justOutside[nAt] = a[c] + (fraction[c] - margin)*(b[c] - a[c]);
+            atEntry[nAt++] = c;
         }
-        atEntry.resize(nAt);
-        justOutside.resize(nAt);
-        boolList in;
-        guardInside(justOutside, in);
-        label k = 0, nBisect = 0;
-        forAll(a, c)
+    }
+    atEntry.resize(nAt);
+    justOutside.resize(nAt);
+    boolList in;
+    guardInside(justOutside, in);
+
+    // The others are bisected between the start (outside) and the end, or
+    // the point before the entry where rounding by an edge put it inside
+    // (so the bisection stays on the part first entered)
+    DynamicList<label> bisect(a.size());
+    DynamicField<point> lo(a.size()), hi(a.size());
+    label k = 0;
+    forAll(a, c)
+    {
+        const bool at = k < nAt && atEntry[k] == c;
+        if (at && !in[k])
         {
-            if (k < nAt && atEntry[k] == c)
-            {
-                if (in[k])
-                {
-                    inEnd[c] = justOutside[k];
-                    bisect[nBisect++] = c;
-                }
-                else
-                {
-                    a[c] = justOutside[k];
-                }
-                ++k;
-            }
-            else if (fraction[c] < 0)
-            {
-                bisect[nBisect++] = c;
-            }
+            a[c] = justOutside[k];
         }
-        bisect.resize(nBisect);
+        else if (at || fraction[c] < 0)
+        {
+            bisect.append(c);
+            lo.append(a[c]);
+            hi.append(at ? justOutside[k] : b[c]);
+        }
+        k += at;
     }
 
-    // The others: bisection between the start (outside) and the inside
-    // end, to 2^-30 of the path
+    // The bisection, to 2^-30 of the path
     const label nb = bisect.size();
-    pointField lo(nb), hi(nb), mid(nb);
-    forAll(bisect, k)
-    {
-        lo[k] = a[bisect[k]];
-        hi[k] = inEnd[bisect[k]];
-    }
-    boolList in;
+    pointField mid(nb);
     for (int iter = 0; iter < nHalvings && nb; ++iter)
     {
-        forAll(mid, k)
+        forAll(mid, j)
         {
-            mid[k] = 0.5*(lo[k] + hi[k]);
+            mid[j] = 0.5*(lo[j] + hi[j]);
         }
         guardInside(mid, in);
-        forAll(mid, k)
+        forAll(mid, j)
         {
-            (in[k] ? hi[k] : lo[k]) = mid[k];
+            (in[j] ? hi[j] : lo[j]) = mid[j];
         }
     }
-    forAll(bisect, k)
+    forAll(bisect, j)
     {
-        a[bisect[k]] = lo[k];
+        a[bisect[j]] = lo[j];
     }
 }
 

@@ -344,8 +344,12 @@ void Foam::barrierGeometries::triSurfaceGeometry::firstCrossings
         const pointIndexHit hit = tree.findLine(start[i], end[i]);
         const bool enters =
             hit.hit() && d2 > 0 && (outwardNormal_[hit.index()] & d) < 0;
-        const scalar f = enters ? ((hit.hitPoint() - start[i]) & d)/d2 : -1;
-        fraction[i] = enters ? min(max(f, scalar(0)), scalar(1)) : f;
+        fraction[i] = -1;
+        if (enters)
+        {
+            const scalar f = ((hit.hitPoint() - start[i]) & d)/d2;
+            fraction[i] = min(max(f, scalar(0)), scalar(1));
+        }
     }
 }
 
