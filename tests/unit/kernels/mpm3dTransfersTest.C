@@ -11,7 +11,8 @@ Description
     the affine momentum at every node of a stencil, P2G's conservation of
     mass and momentum, the internal force of a uniform stress (zero at the
     interior nodes, its first moment the total -V sigma), G2P of a linear
-    velocity field, and the volume change of a body at rest.
+    velocity field, the volume change of a body at rest, and J held at
+    the material's maxJ.
 
 \*---------------------------------------------------------------------------*/
 
@@ -435,6 +436,39 @@ TEST(mpm3dTransfers, VolumeChangeOfBodyAtRestIsNodeVolumeExactly)
     {
         ASSERT_EQ(r, 1.0);
     }
+}
+
+
+TEST(mpm3dTransfers, VolumeRatioIsHeldAtTheMaterialsMaxJ)
+{
+    // J 1 to 1.2 (held at 1.2), 1 to 4.2 (held), a compression, a NaN
+    double J[4] = {1, 1, 1, std::nan("")};
+    const double ratio[4] = {1.2, 4.2, 0.9, 1.0};
+    double m[4] = {2, 2, 2, 2}, V[4] = {}, div[4] = {};
+    mpm3dParticles p;
+    p.n = 4;
+    p.J = J;
+    p.m = m;
+    p.V = V;
+    p.div = div;
+    mpm3dSettings set;
+    set.rho0 = 1000;
+    set.maxJ = 1.2;
+    const double dt = 1e-3;
+    for (gridIndex i = 0; i < p.n; ++i)
+    {
+        setVolumeRatio(p, i, ratio[i], set, dt);
+    }
+    const double expected[3] = {1.2, 1.2, 0.9};
+    for (int i = 0; i < 3; ++i)
+    {
+        EXPECT_EQ(J[i], expected[i]) << i;
+        EXPECT_EQ(V[i], m[i]*expected[i]/set.rho0) << i;
+        // The step's strain rate stays the grid's
+        EXPECT_EQ(div[i], (ratio[i] - 1)/dt) << i;
+    }
+    EXPECT_TRUE(std::isnan(J[3]));
+    EXPECT_TRUE(std::isnan(V[3]));
 }
 
 

@@ -21,6 +21,8 @@ Description
       c sqrt(1 + 4 G/(3 rho c^2)), and the Maxwell element relaxing
       exactly: sigma_xy(t) = mu_eff gammaDot (1 - exp(-G t/mu_eff)) at any
       step;
+    - maxJ, the J where a particle's wave speed on the grid reaches the
+      step's, with and without tension;
     - the update of many particles (in blocks, with strain, spin and
       volumetric smoothing's divergence) against the same update written
       with 3 x 3 tensors, Bingham and Newtonian.
@@ -50,6 +52,13 @@ constexpr double rho = 1000, c = 20, gamma = 7;
 double taitPressure(const double J)
 {
     return rho*c*c/gamma*(std::pow(J, -gamma) - 1);
+}
+
+//- A particle's wave speed squared on the grid at J: (K + 4G/3) J/rho,
+//  K = rho c^2 J^-gamma while the pressure holds tension
+double gridSpeedSqr(const double J, const double G, const bool tension)
+{
+    return (tension ? c*c*std::pow(J, 1 - gamma) : 0) + 4*G*J/(3*rho);
 }
 
 } // End anonymous namespace
@@ -246,6 +255,46 @@ TEST(viscoplasticFluid, BinghamMaxwellStressRelaxesExactlyAtAnyStep)
     }
     // Well short of the steady stress: the test sees the relaxation
     EXPECT_LT(expected, 0.9*steady);
+}
+
+
+TEST(viscoplasticFluid, MaxJIsWhereAParticlesGridWaveSpeedReachesTheSteps)
+{
+    const auto fluid = [](const std::string& type, const std::string& coeffs)
+    {
+        return materialModel::New(materialDict(type, tait + coeffs));
+    };
+
+    // No tension: the shear's speed alone, sqrt(4 G J/(3 rho)), reaches
+    // the step's c sqrt(1 + 4G/(3 rho c^2)) at 1 + 3 rho c^2/(4 G)
+    EXPECT_NEAR(fluid("Bingham", " mu 10; tauY 200;")->maxJ(), 4, 1e-14);
+    EXPECT_NEAR
+    (
+        fluid("Bingham", " mu 10; tauY 200; shearModulus 1e4;")->maxJ(),
+        1 + 3*rho*c*c/4e4, 1e-13
+    );
+    // Tension to pMin = -1e3: the cut-off at J = 1.0025, where the speed
+    // is still below the step's; beyond it the shear's alone
+    EXPECT_NEAR
+    (
+        fluid("Bingham", " mu 10; tauY 200; pMin -1e3;")->maxJ(), 4, 1e-14
+    );
+    // Tension never cut (Tait's pressure stays above -rho c^2/gamma) and
+    // a stiff shear: the pressure's stiffness and the shear's reach the
+    // step's speed together, before 1 + 3 rho c^2/(4 G) = 4/3
+    const double G = 2.25*rho*c*c;
+    autoPtr<materialModel> stiff
+    (
+        fluid("Bingham", " mu 10; tauY 200; pMin -1e13; shearModulus 9e5;")
+    );
+    const double J = stiff->maxJ();
+    const double target = sqr(stiff->waveSpeed());
+    EXPECT_GT(J, 1.2);
+    EXPECT_LT(J, 1.3);
+    EXPECT_NEAR(gridSpeedSqr(J, G, true), target, 1e-12*target);
+    EXPECT_GT(gridSpeedSqr(J*(1 + 1e-9), G, true), target);
+    // No shear modulus: nothing stiffens with J
+    EXPECT_GE(fluid("Newtonian", " mu 1e-3;")->maxJ(), VGREAT);
 }
 
 

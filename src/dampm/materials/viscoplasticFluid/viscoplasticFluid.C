@@ -121,6 +121,48 @@ Foam::scalar Foam::materialModels::viscoplasticFluid::restJ
 }
 
 
+Foam::scalar Foam::materialModels::viscoplasticFluid::gridWaveSpeedSqr
+(
+    const scalar J,
+    const bool tension
+) const
+{
+    // Stiffness over density: (K + 4G/3) V/m, K = -J dp/dJ = rho c^2
+    // J^-gamma while the pressure holds tension, V/m = J/rho
+    return (tension ? c_*c_*std::pow(J, 1 - gamma_) : 0) + 4*G_*J/(3*rho_);
+}
+
+
+Foam::scalar Foam::materialModels::viscoplasticFluid::maxJ() const
+{
+    if (!(G_ > 0))
+    {
+        return VGREAT;
+    }
+    // Beyond the cut-off only the shear stiffness is left: its wave speed
+    // reaches the step's at Ja
+    const scalar target = sqr(waveSpeed());
+    const scalar Ja = 1 + 3*rho_*c_*c_/(4*G_);
+    // (Tait's pressure tends to -rho c^2/gamma as J grows: a cut-off below
+    // it is never reached)
+    const scalar Jcut =
+        1 + gamma_*pMin_/(rho_*c_*c_) > 0 ? restJ(pMin_) : VGREAT;
+    if (!(Jcut > 1) || gridWaveSpeedSqr(min(Jcut, Ja), true) <= target)
+    {
+        return Ja;
+    }
+    // A fluid holding tension: the speed, convex in J and at the step's
+    // speed at J = 1, reaches it again below min(Jcut, Ja)
+    scalar lo = 1, hi = min(Jcut, Ja);
+    for (int iter = 0; iter < 100; ++iter)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        (gridWaveSpeedSqr(mid, true) > target ? hi : lo) = mid;
+    }
+    return lo;
+}
+
+
 template<bool Maxwell>
 Foam::label Foam::materialModels::viscoplasticFluid::updateBlock
 (
@@ -292,7 +334,7 @@ void Foam::materialModels::viscoplasticFluid::describe(Ostream& os) const
     viscosity_.describe(os);
     if (G_ > 0)
     {
-        os  << ", Maxwell G = " << G_ << " Pa";
+        os  << ", Maxwell G = " << G_ << " Pa, J at most " << maxJ();
     }
     os  << ", volumetric smoothing " << (volumetricSmoothing_ ? "on" : "off")
         << ")";

@@ -549,6 +549,7 @@ Foam::mpm3dFlow::mpm3dFlow
         settings_.g[d] = g[d];
     }
     settings_.rho0 = material_->rho();
+    settings_.maxJ = material_->maxJ();
     settings_.smoothJ = material_->volumetricSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
