@@ -441,12 +441,14 @@ TEST(mpm3dTransfers, VolumeChangeOfBodyAtRestIsNodeVolumeExactly)
 
 TEST(mpm3dTransfers, VolumeRatioIsHeldAtTheMaterialsMaxJ)
 {
-    // J 1 to 1.2 (held at 1.2), 1 to 4.2 (held), a compression, a NaN
-    double J[4] = {1, 1, 1, std::nan("")};
-    const double ratio[4] = {1.2, 4.2, 0.9, 1.0};
-    double m[4] = {2, 2, 2, 2}, V[4] = {}, div[4] = {};
+    // J 1 to 1.3 and to 4.2 (held at 1.2), a compression, a volume through
+    // zero (left to the material's check), a NaN (left to the NaN checks)
+    constexpr int n = 5;
+    double J[n] = {1, 1, 1, 1, std::nan("")};
+    const double ratio[n] = {1.3, 4.2, 0.9, -2, 1};
+    double m[n] = {2, 2, 2, 2, 2}, V[n] = {}, div[n] = {};
     mpm3dParticles p;
-    p.n = 4;
+    p.n = n;
     p.J = J;
     p.m = m;
     p.V = V;
@@ -459,16 +461,16 @@ TEST(mpm3dTransfers, VolumeRatioIsHeldAtTheMaterialsMaxJ)
     {
         setVolumeRatio(p, i, ratio[i], set, dt);
     }
-    const double expected[3] = {1.2, 1.2, 0.9};
-    for (int i = 0; i < 3; ++i)
+    const double expected[n - 1] = {1.2, 1.2, 0.9, -2};
+    for (int i = 0; i < n - 1; ++i)
     {
         EXPECT_EQ(J[i], expected[i]) << i;
         EXPECT_EQ(V[i], m[i]*expected[i]/set.rho0) << i;
         // The step's strain rate stays the grid's
         EXPECT_EQ(div[i], (ratio[i] - 1)/dt) << i;
     }
-    EXPECT_TRUE(std::isnan(J[3]));
-    EXPECT_TRUE(std::isnan(V[3]));
+    EXPECT_TRUE(std::isnan(J[n - 1]));
+    EXPECT_TRUE(std::isnan(V[n - 1]));
 }
 
 

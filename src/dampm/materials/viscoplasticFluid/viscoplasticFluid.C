@@ -121,45 +121,29 @@ Foam::scalar Foam::materialModels::viscoplasticFluid::restJ
 }
 
 
-Foam::scalar Foam::materialModels::viscoplasticFluid::gridWaveSpeedSqr
+Foam::scalar Foam::materialModels::viscoplasticFluid::maxJ
 (
-    const scalar J,
-    const bool tension
+    const scalar dt,
+    const scalar h
 ) const
 {
-    // Stiffness over density: (K + 4G/3) V/m, K = -J dp/dJ = rho c^2
-    // J^-gamma while the pressure holds tension, V/m = J/rho
-    return (tension ? c_*c_*std::pow(J, 1 - gamma_) : 0) + 4*G_*J/(3*rho_);
-}
-
-
-Foam::scalar Foam::materialModels::viscoplasticFluid::maxJ() const
-{
-    if (!(G_ > 0))
+    // Alone on its nodes a particle's affine modes are free: the stiffest
+    // is deviatoric, modulus 2G (the pressure is cut beyond J = 1) or the
+    // viscous 2 mu, on the mass density rho/J, with sum h^2 N'^2/N up to 6
+    // over a quadratic B-spline's nodes. Explicit steps keep an oscillation
+    // stable while w dt <= 2, w^2 = (J/rho) 2G 6/h^2, and a decay while its
+    // rate (J/rho) 2 mu 6/h^2 is at most 2/dt. (At J = 1 the stiffest mode
+    // is the step's own concern.)
+    scalar J = VGREAT;
+    if (G_ > 0)
     {
-        return VGREAT;
+        J = rho_*h*h/(3*G_*dt*dt);
     }
-    // Beyond the cut-off only the shear stiffness is left: its wave speed
-    // reaches the step's at Ja
-    const scalar target = sqr(waveSpeed());
-    const scalar Ja = 1 + 3*rho_*c_*c_/(4*G_);
-    // (Tait's pressure tends to -rho c^2/gamma as J grows: a cut-off below
-    // it is never reached)
-    const scalar Jcut =
-        1 + gamma_*pMin_/(rho_*c_*c_) > 0 ? restJ(pMin_) : VGREAT;
-    if (!(Jcut > 1) || gridWaveSpeedSqr(min(Jcut, Ja), true) <= target)
+    else if (viscosity_.maxViscosity() > 0)
     {
-        return Ja;
+        J = rho_*h*h/(6*viscosity_.maxViscosity()*dt);
     }
-    // A fluid holding tension: the speed, convex in J and at the step's
-    // speed at J = 1, reaches it again below min(Jcut, Ja)
-    scalar lo = 1, hi = min(Jcut, Ja);
-    for (int iter = 0; iter < 100; ++iter)
-    {
-        const scalar mid = 0.5*(lo + hi);
-        (gridWaveSpeedSqr(mid, true) > target ? hi : lo) = mid;
-    }
-    return lo;
+    return max(J, 1.0);
 }
 
 
@@ -289,8 +273,8 @@ void Foam::materialModels::viscoplasticFluid::inverted
     }
     FatalErrorInFunction
         << "particle " << i << " at (" << x[0][i] << " " << x[1][i] << " "
-        << x[2][i] << ") has been compressed to a volume ratio J = "
-        << mp.J[i] << " in one step: its volume went through zero, which no"
+        << x[2][i] << ") has the volume ratio J = " << mp.J[i]
+        << " after one step: its volume went through zero, which no"
         << " material survives. The step is too long for the flow there;"
         << " lower maxCo in system/controlDict (the stable step of a"
         << " weakly compressible fluid is about 0.4 of a cell over the wave"
@@ -334,7 +318,7 @@ void Foam::materialModels::viscoplasticFluid::describe(Ostream& os) const
     viscosity_.describe(os);
     if (G_ > 0)
     {
-        os  << ", Maxwell G = " << G_ << " Pa, J at most " << maxJ();
+        os  << ", Maxwell G = " << G_ << " Pa";
     }
     os  << ", volumetric smoothing " << (volumetricSmoothing_ ? "on" : "off")
         << ")";

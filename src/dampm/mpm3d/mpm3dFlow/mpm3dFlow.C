@@ -549,7 +549,6 @@ Foam::mpm3dFlow::mpm3dFlow
         settings_.g[d] = g[d];
     }
     settings_.rho0 = material_->rho();
-    settings_.maxJ = material_->maxJ();
     settings_.smoothJ = material_->volumetricSmoothing();
     settings_.flipRatio = dict.getOrDefault<scalar>("flipRatio", 0);
     settings_.damping = dict.getOrDefault<scalar>("damping", 0);
@@ -1027,6 +1026,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
 void Foam::mpm3dFlow::gridToParticles(const scalar dt)
 {
     const gridGeometry& g = grid_.geometry();
+    settings_.maxJ = material_->maxJ(dt, g.hMin());
     const mpm3dParticles view = kernelView();
     const label n = particles_.size();
     const double* x0[3] = {nullptr, nullptr, nullptr};
