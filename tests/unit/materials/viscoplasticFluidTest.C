@@ -251,7 +251,7 @@ TEST(viscoplasticFluid, BinghamMaxwellStressRelaxesExactlyAtAnyStep)
 }
 
 
-TEST(viscoplasticFluid, MaxJIsWhereALoneParticlesStiffestModeReachesTheStepsLimit)
+TEST(viscoplasticFluid, MaxJIsWhereALoneParticlesModeReachesTheStepsLimit)
 {
     const auto fluid = [](const std::string& type, const std::string& coeffs)
     {
@@ -267,27 +267,35 @@ TEST(viscoplasticFluid, MaxJIsWhereALoneParticlesStiffestModeReachesTheStepsLimi
         const double dt = maxCo*h/mud->waveSpeed();
         EXPECT_NEAR
         (
-            mud->maxJ(dt, h), 16/(9*maxCo*maxCo), 1e-13*mud->maxJ(dt, h)
+            mud->maxJ(dt, h, 6), 16/(9*maxCo*maxCo), 1e-13*mud->maxJ(dt, h, 6)
         ) << maxCo;
     }
     const double G = 1e4, dt = 1e-3;
     EXPECT_NEAR
     (
-        fluid("Bingham", " mu 10; tauY 200; shearModulus 1e4;")->maxJ(dt, h),
+        fluid("Bingham", " mu 10; tauY 200; shearModulus 1e4;")
+            ->maxJ(dt, h, 6),
         rho*h*h/(3*G*dt*dt), 1e-13*rho*h*h/(3*G*dt*dt)
     );
     // Viscous, no G: the decay rate (J/rho) 2 mu 6/h^2 = 2/dt
     const double mu = 1e-3;
     EXPECT_NEAR
     (
-        fluid("Newtonian", " mu 1e-3;")->maxJ(dt, h),
+        fluid("Newtonian", " mu 1e-3;")->maxJ(dt, h, 6),
         rho*h*h/(6*mu*dt), 1e-13*rho*h*h/(6*mu*dt)
     );
     // A step too long for a lone particle even at rest volume: J not
     // pushed below 1 (that would be pressure, not a bound)
-    EXPECT_EQ(mud->maxJ(1, h), 1);
+    EXPECT_EQ(mud->maxJ(1, h, 6), 1);
+    // GIMP with 4 particles per cell and axis (lp = 1/8): a = 2/lp +
+    // 1/(1 - lp) instead of 6 (at maxCo 0.4); the hat's unbounded
+    // stiffness leaves 1
+    const double dt4 = 0.4*h/mud->waveSpeed(), a = 16 + 8.0/7;
+    EXPECT_NEAR(mud->maxJ(dt4, h, a), 16/(9*0.16)*6/a, 1e-13);
+    const double hat = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(mud->maxJ(dt4, h, hat), 1);
     // Nothing stiffens with J without viscosity or G
-    EXPECT_GE(fluid("Newtonian", " mu 0;")->maxJ(dt, h), VGREAT);
+    EXPECT_GE(fluid("Newtonian", " mu 0;")->maxJ(dt, h, 6), VGREAT);
 }
 
 

@@ -10,7 +10,8 @@ Description
     Shape functions: partition of unity and linear completeness of values
     and gradients at random points (near the boundary too), gradients that
     match finite differences of the values, stencils inside the node arrays,
-    and run-time selection by name.
+    the stiffness of a particle alone on its nodes, and run-time selection
+    by name.
 
 \*---------------------------------------------------------------------------*/
 
@@ -201,6 +202,52 @@ TEST(shapeFunctions, GIMPTendsToLinearAwayFromNodes)
     EXPECT_NEAR(wg[1], wl[0], 1e-15);
     EXPECT_NEAR(wg[2], wl[1], 1e-15);
     EXPECT_NEAR(wg[0], 0.0, 1e-15);
+}
+
+
+//- The largest sum dw^2/w over the nodes with w > 0 on n positions across
+//  a cell
+template<class Kernel>
+double sampledLoneStiffness(const Kernel& k, const int n)
+{
+    double largest = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        double w[Kernel::width], dw[Kernel::width];
+        k(7 + (i + 0.5)/n, w, dw);
+        double sum = 0;
+        for (int a = 0; a < Kernel::width; ++a)
+        {
+            sum += w[a] > 0 ? dw[a]*dw[a]/w[a] : 0;
+        }
+        largest = std::max(largest, sum);
+    }
+    return largest;
+}
+
+
+TEST(shapeFunctions, LoneParticleStiffnessIsTheSupremumOfSumDw2OverW)
+{
+    // Approached from below (within 1e-4 on 1e5 positions) and never
+    // passed; the hat's grows without end as a weight vanishes
+    constexpr int n = 100000;
+    const quadraticBSplineKernel q;
+    EXPECT_LE(sampledLoneStiffness(q, n), q.loneParticleStiffness());
+    EXPECT_GT
+    (
+        sampledLoneStiffness(q, n), (1 - 1e-4)*q.loneParticleStiffness()
+    );
+    for (const double lp : {0.25, 0.125, 1.0/16})
+    {
+        const GIMPKernel k = gimp(lp);
+        EXPECT_LE(sampledLoneStiffness(k, n), k.loneParticleStiffness()) << lp;
+        EXPECT_GT
+        (
+            sampledLoneStiffness(k, n), (1 - 1e-4)*k.loneParticleStiffness()
+        ) << lp;
+    }
+    EXPECT_TRUE(std::isinf(linearKernel().loneParticleStiffness()));
+    EXPECT_GT(sampledLoneStiffness(linearKernel(), n), 0.9*n);
 }
 
 

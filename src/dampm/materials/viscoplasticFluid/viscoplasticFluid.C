@@ -124,24 +124,25 @@ Foam::scalar Foam::materialModels::viscoplasticFluid::restJ
 Foam::scalar Foam::materialModels::viscoplasticFluid::maxJ
 (
     const scalar dt,
-    const scalar h
+    const scalar h,
+    const scalar a
 ) const
 {
     // Alone on its nodes a particle's affine modes are free: the stiffest
     // is deviatoric, modulus 2G (the pressure is cut beyond J = 1) or the
-    // viscous 2 mu, on the mass density rho/J, with sum h^2 N'^2/N up to 6
-    // over a quadratic B-spline's nodes. Explicit steps keep an oscillation
-    // stable while w dt <= 2, w^2 = (J/rho) 2G 6/h^2, and a decay while its
-    // rate (J/rho) 2 mu 6/h^2 is at most 2/dt. (At J = 1 the stiffest mode
-    // is the step's own concern.)
+    // viscous 2 mu, on the mass density rho/J, times a/h^2 (6/h^2 for the
+    // quadratic B-spline). Explicit steps keep an oscillation stable while
+    // w dt <= 2, w^2 = (J/rho) 2G a/h^2, and a decay while its rate
+    // (J/rho) 2 mu a/h^2 is at most 2/dt. (Below 1 no J would do: the step
+    // itself is too long for a lone particle.)
     scalar J = VGREAT;
     if (G_ > 0)
     {
-        J = rho_*h*h/(3*G_*dt*dt);
+        J = 2*rho_*h*h/(G_*a*dt*dt);
     }
     else if (viscosity_.maxViscosity() > 0)
     {
-        J = rho_*h*h/(6*viscosity_.maxViscosity()*dt);
+        J = rho_*h*h/(viscosity_.maxViscosity()*a*dt);
     }
     return max(J, 1.0);
 }
