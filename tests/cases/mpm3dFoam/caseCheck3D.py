@@ -94,6 +94,14 @@ def checkFinite(case="."):
         check(sizes, "%s: one value per particle (%d) in every field at t = %s" % (case, len(p), t))
 
 
+def checkReachedEnd(s, endTime, what):
+    """The run of summary.dat s ended at endTime, within half its last step
+    (OpenFOAM's Time::run stops once time >= endTime - deltaT/2)"""
+    check(s["time"][-1] >= endTime - 0.5 * s["deltaT"][-1],
+          "%s: reached endTime %g s within half its last step (%.6f s, step %.3g s)"
+          % (what, endTime, s["time"][-1], s["deltaT"][-1]))
+
+
 def finish():
     if failures:
         print("%d check(s) failed" % len(failures))

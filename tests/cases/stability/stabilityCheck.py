@@ -24,6 +24,7 @@ dp = cc2.dp
 # One list of failures for the checks of both helper modules
 cc3.failures = cc2.failures
 check = cc2.check
+checkReachedEnd = cc3.checkReachedEnd
 near = cc2.near
 finish = cc2.finish
 

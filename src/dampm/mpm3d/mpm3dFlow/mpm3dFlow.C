@@ -495,7 +495,6 @@ Foam::mpm3dFlow::mpm3dFlow
 :
     grid_(grid),
     nPerCell_(dict.getOrDefault<label>("particlesPerCell", 2)),
-    loneStiffness_(0),
     gradU_(-1),
     sigma_(-1),
     p_(-1),
@@ -533,14 +532,6 @@ Foam::mpm3dFlow::mpm3dFlow
         shapeDict.add("shapeFunction", word("quadraticBSpline"));
     }
     shape_ = shapeFunction::New(shapeDict, 0.5/nPerCell_);
-    visitShape
-    (
-        *shape_,
-        [&](const auto& kernel)
-        {
-            loneStiffness_ = kernel.loneParticleStiffness();
-        }
-    );
     material_ = materialModel::New(dict);
 
     if (grid.isPlane() && g.y() != 0)
@@ -1035,7 +1026,6 @@ void Foam::mpm3dFlow::contact(const scalar dt)
 void Foam::mpm3dFlow::gridToParticles(const scalar dt)
 {
     const gridGeometry& g = grid_.geometry();
-    settings_.maxJ = material_->maxJ(dt, g.hMin(), loneStiffness_);
     const mpm3dParticles view = kernelView();
     const label n = particles_.size();
     const double* x0[3] = {nullptr, nullptr, nullptr};
@@ -1065,6 +1055,8 @@ void Foam::mpm3dFlow::gridToParticles(const scalar dt)
     (
         [&](const auto& kernel)
         {
+            settings_.maxJ =
+                material_->maxJ(dt, g.hMin(), kernel.loneParticleStiffness());
             gridToParticles3D
             (
                 g, schedule_, kernel, stencilNodes_,
