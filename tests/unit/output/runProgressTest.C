@@ -9,8 +9,10 @@ License
 Description
     The progress lines of the solvers' logs: the share of the span to
     endTime, the wall time left extrapolated from the simulated time per
-    wall time so far, a line every progressInterval seconds of a made-up
-    wall clock, and the progressInterval of the controlDict, checked.
+    wall time over the run's last half, at least its last minute (since the
+    start in the first minute), a line every progressInterval seconds of a
+    made-up wall clock, and the progressInterval of the controlDict,
+    checked.
 
 \*---------------------------------------------------------------------------*/
 
@@ -56,6 +58,51 @@ label linesDue(runProgress& progress, const double dt, const double end)
     return lines;
 }
 
+//- Simulated time at wall time wall [s]: 0.1 s per second of wall time
+//  until wall time change [s], half that after (the work per step doubled)
+struct slowingRun
+{
+    double change;
+
+    double operator()(const double wall) const
+    {
+        return
+            wall <= change
+          ? 0.1*wall
+          : 0.1*change + 0.05*(wall - change);
+    }
+};
+
+
+//- A run from t = 0 with a progress line every 5 s to wall time end [s]
+runProgress recorded(const slowingRun& t, const double end)
+{
+    runProgress progress(0, 5);
+    for (double wall = 5; wall <= end; wall += 5)
+    {
+        progress.record(wall, t(wall));
+    }
+    return progress;
+}
+
+
+//- The time left to endTime 30 s at wall time wall [s] is that at the
+//  rate since the line of wall time wall0 [s]
+void expectRateSince
+(
+    const runProgress& progress,
+    const slowingRun& t,
+    const double wall,
+    const double wall0
+)
+{
+    EXPECT_DOUBLE_EQ
+    (
+        progress.timeLeft(t(wall), 30, wall),
+        (wall - wall0)*(30 - t(wall))/(t(wall) - t(wall0))
+    );
+}
+
 } // End anonymous namespace
 
 
@@ -75,6 +122,75 @@ TEST(runProgress, TimeLeftExtrapolatesTheSimulatedTimePerWallTime)
     // Restarted at 10: 5 s in 50 s, 5 s to go
     EXPECT_DOUBLE_EQ(runProgress(10, 5).timeLeft(15, 20, 50), 50);
     EXPECT_DOUBLE_EQ(runProgress(10, 5).timeLeft(20, 20, 50), 0);
+}
+
+
+TEST(runProgress, TimeLeftTakesTheRateOfTheRunsLastHalf)
+{
+    // The rate halves at 150 s. At 240 s (t = 19.5): the rate since the
+    // line of 120 s, neither that of the last minute nor that since the
+    // start
+    const slowingRun t{150};
+    const runProgress progress = recorded(t, 240);
+    expectRateSince(progress, t, 240, 120);
+    // At a later wall time than the last line's the window reaches on,
+    // to the line of 125 s at 250 s
+    expectRateSince(progress, t, 250, 125);
+}
+
+
+TEST(runProgress, TimeLeftTakesTheRateOfAtLeastTheLastMinute)
+{
+    // The rate halves at 45 s. At 100 s half the run is 50 s, so the rate
+    // is that since the line of 40 s, minRateWindow before
+    const slowingRun t{45};
+    expectRateSince(recorded(t, 100), t, 100, 40);
+}
+
+
+TEST(runProgress, TimeLeftTakesTheRateSinceTheStartInTheFirstMinute)
+{
+    // Lines at 5, 10, ..., 55 s of a run restarted at t = 2: no line is a
+    // minute old, so the rate is that since the start (wall 0, t = 2)
+    runProgress progress(2, 5);
+    for (double wall = 5; wall < 60; wall += 5)
+    {
+        progress.record(wall, 2 + 0.1*wall*wall/55);
+    }
+    const double t = 2 + 0.1*55;
+    EXPECT_DOUBLE_EQ(progress.timeLeft(t, 12, 55), 55*(12 - t)/(t - 2));
+}
+
+
+TEST(runProgress, TimeLeftIsUnknownWithNoSimulatedTimeInTheWindow)
+{
+    // Stuck at t = 3 from 10 s on: at 100 s the window (from 40 s) has no
+    // simulated time, though the run since the start has
+    runProgress progress(0, 5);
+    for (double wall = 5; wall <= 100; wall += 5)
+    {
+        progress.record(wall, std::min(0.3*wall, 3.0));
+    }
+    EXPECT_LT(progress.timeLeft(3, 12, 100), 0);
+}
+
+
+TEST(runProgress, ALineEveryStepKeepsAHundredthOfTheWindowApart)
+{
+    // progressInterval 0 on steps of 1 ms for 1000 s: the lines kept are
+    // a hundredth of the window (5 s at the end) apart, so the rate is
+    // still that of the run's last half, to within a hundredth
+    const solverFpTraps traps;
+    runProgress progress(0, 0);
+    for (int step = 1; step <= 1000000; ++step)
+    {
+        const double wall = 1e-3*step;
+        progress.record(wall, wall <= 500 ? 0.1*wall : 50 + 0.05*(wall - 500));
+    }
+    // Lines from 500 s on, 5 s apart at most: about 130 of 1e6
+    EXPECT_LE(progress.nKept(), 200);
+    // Since the line of 500 s (t = 50): 25 s simulated in 500 s
+    EXPECT_NEAR(progress.timeLeft(75, 100, 1000), 500, 5);
 }
 
 

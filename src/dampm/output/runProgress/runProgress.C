@@ -17,6 +17,16 @@ License
 
 const Foam::scalar Foam::runProgress::intervalDefault = 5;
 
+const Foam::scalar Foam::runProgress::minRateWindow = 60;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+double Foam::runProgress::rateWindow(const double wall)
+{
+    return max(minRateWindow, 0.5*wall);
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -55,6 +65,23 @@ Foam::scalar Foam::runProgress::percent
 }
 
 
+void Foam::runProgress::record(const double wall, const scalar t)
+{
+    // Lines a hundredth of the window apart at most: a line every step
+    // (progressInterval 0) keeps a few hundred, not half the run's steps
+    const double window = rateWindow(wall);
+    if (recent_.empty() || wall - recent_.back().first >= 0.01*window)
+    {
+        recent_.emplace_back(wall, t);
+    }
+    // The first line is needed while the next is within the window
+    while (recent_.size() > 1 && wall - recent_[1].first >= window)
+    {
+        recent_.pop_front();
+    }
+}
+
+
 Foam::scalar Foam::runProgress::timeLeft
 (
     const scalar t,
@@ -62,18 +89,31 @@ Foam::scalar Foam::runProgress::timeLeft
     const scalar wall
 ) const
 {
-    const scalar done = t - startTime_;
-    if (!(done > 0 && wall > 0))
+    // The rate since the latest line at least a window before (a later
+    // wall than the last record's may reach past the first), or since the
+    // start
+    const double window = rateWindow(wall);
+    size_t i = 0;
+    while (i + 1 < recent_.size() && wall - recent_[i + 1].first >= window)
+    {
+        ++i;
+    }
+    const bool windowed =
+        !recent_.empty() && wall - recent_[i].first >= window;
+    const double wall0 = windowed ? recent_[i].first : 0;
+    const scalar done = t - (windowed ? recent_[i].second : startTime_);
+    const scalar elapsed = wall - wall0;
+    if (!(done > 0 && elapsed > 0))
     {
         return -1;
     }
-    // Wall time per simulated time so far, times the simulated time left,
-    // from the share done f: numbers in [0, 1] and wall only, so that a
+    // Wall time per simulated time, times the simulated time left, from
+    // the share f of the two: numbers in [0, 1] and elapsed only, so that a
     // tiny step and a far endTime cap the estimate instead of overflowing
     // (the solvers trap overflow)
     const scalar left = max(endTime - t, scalar(0));
     const scalar f = done/(done + left);
-    return wall*(1 - f) < f*GREAT ? wall*(1 - f)/f : GREAT;
+    return elapsed*(1 - f) < f*GREAT ? elapsed*(1 - f)/f : GREAT;
 }
 
 
@@ -120,6 +160,8 @@ void Foam::runProgress::update
     const double wall = timers.elapsed();
     if (due(wall))
     {
+        // Kept for the rate of the time left
+        record(wall, t);
         // Flushed: a log followed with tail -f shows it at once
         os  << line(t, endTime, wall, timers.updatesPerSecond(wall)).c_str()
             << endl;
