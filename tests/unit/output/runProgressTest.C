@@ -181,11 +181,11 @@ TEST(runProgress, ALineEveryStepKeepsAHundredthOfTheWindowApart)
     // a hundredth of the window (5 s at the end) apart, so the rate is
     // still that of the run's last half, to within a hundredth
     const solverFpTraps traps;
+    const slowingRun t{500};
     runProgress progress(0, 0);
     for (int step = 1; step <= 1000000; ++step)
     {
-        const double wall = 1e-3*step;
-        progress.record(wall, wall <= 500 ? 0.1*wall : 50 + 0.05*(wall - 500));
+        progress.record(1e-3*step, t(1e-3*step));
     }
     // Lines from 500 s on, 5 s apart at most: about 130 of 1e6
     EXPECT_LE(progress.nKept(), 200);

@@ -28,6 +28,18 @@ double Foam::runProgress::rateWindow(const double wall)
 }
 
 
+size_t Foam::runProgress::rateLine(const double wall) const
+{
+    const double window = rateWindow(wall);
+    size_t i = 0;
+    while (i + 1 < recent_.size() && wall - recent_[i + 1].first >= window)
+    {
+        ++i;
+    }
+    return i;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::runProgress::runProgress(const scalar startTime, const scalar interval)
@@ -69,16 +81,17 @@ void Foam::runProgress::record(const double wall, const scalar t)
 {
     // Lines a hundredth of the window apart at most: a line every step
     // (progressInterval 0) keeps a few hundred, not half the run's steps
-    const double window = rateWindow(wall);
-    if (recent_.empty() || wall - recent_.back().first >= 0.01*window)
+    if
+    (
+        recent_.empty()
+     || wall - recent_.back().first >= 0.01*rateWindow(wall)
+    )
     {
         recent_.emplace_back(wall, t);
     }
-    // The first line is needed while the next is within the window
-    while (recent_.size() > 1 && wall - recent_[1].first >= window)
-    {
-        recent_.pop_front();
-    }
+    // The lines before the rate's are not needed again: the window's start
+    // only moves on
+    recent_.erase(recent_.begin(), recent_.begin() + rateLine(wall));
 }
 
 
@@ -89,17 +102,11 @@ Foam::scalar Foam::runProgress::timeLeft
     const scalar wall
 ) const
 {
-    // The rate since the latest line at least a window before (a later
-    // wall than the last record's may reach past the first), or since the
-    // start
-    const double window = rateWindow(wall);
-    size_t i = 0;
-    while (i + 1 < recent_.size() && wall - recent_[i + 1].first >= window)
-    {
-        ++i;
-    }
+    // The rate since the latest line at least a window before, or since
+    // the start
+    const size_t i = rateLine(wall);
     const bool windowed =
-        !recent_.empty() && wall - recent_[i].first >= window;
+        !recent_.empty() && wall - recent_[i].first >= rateWindow(wall);
     const double wall0 = windowed ? recent_[i].first : 0;
     const scalar done = t - (windowed ? recent_[i].second : startTime_);
     const scalar elapsed = wall - wall0;
