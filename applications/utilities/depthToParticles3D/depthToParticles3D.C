@@ -30,6 +30,10 @@ Description
     - converts the columns whose footprint lies inside the 3D mesh
       (columnsTo3D: mass, volume, horizontal momentum and its kinetic
       energy kept to round-off; hydrostatic stress), and counts the others;
+      with -merge, the columns smaller than the 3D particle spacing first
+      merged per cell of it (columnsTo3D::merge: mass, volume, momentum
+      and the horizontal centre of mass kept; the columns in
+      conversion.dat are then the merged ones);
     - writes the particles as the cloud mpm3dCloud of this case at the
       source time (the same time name), so that mpm3dFoam (startFrom
       latestTime) carries on the physical time, and the totals to
@@ -96,6 +100,16 @@ int main(int argc, char *argv[])
         " columns (default: a quarter of the 3D cell height)"
     );
 
+    argList::addBoolOption
+    (
+        "merge",
+        "Merge the columns smaller than the 3D particle spacing, per cell of"
+        " that spacing, before converting: fewer particles where the run-out"
+        " split its columns finer than the 3D stage resolves (mass, volume,"
+        " momentum and the horizontal centre of mass kept; the merge logs the"
+        " kinetic energy of the velocity differences within a cell)"
+    );
+
     #include "setRootCase.H"
     #include "readOptions.H"
 
@@ -126,11 +140,25 @@ int main(int argc, char *argv[])
     );
     particleArrays particles3D(flow3D.particles());
     std::vector<char> converted;
-    const columnsTo3D::totals totals =
-        conversion.convert
+    columnsTo3D::totals totals;
+    if (args.found("merge"))
+    {
+        const columnsTo3D::mergedColumns merged =
+            conversion.merge(columns.runOut());
+        merged.report(Info);
+        totals = conversion.convert
+        (
+            merged.view(), particles3D, flow3D.stress(), &converted
+        );
+        converted = merged.perSource(converted);
+    }
+    else
+    {
+        totals = conversion.convert
         (
             columns.runOut(), particles3D, flow3D.stress(), &converted
         );
+    }
 
     #include "checkConversion.H"
 

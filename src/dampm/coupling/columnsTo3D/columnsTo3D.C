@@ -11,6 +11,7 @@ License
 #include "columnsTo3D.H"
 #include "particleMemory.H"
 #include <cmath>
+#include <unordered_map>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -62,6 +63,37 @@ struct column
 Foam::label subdivisions(const double length, const double spacing)
 {
     return Foam::max(Foam::label(1), Foam::label(std::lround(length/spacing)));
+}
+
+
+//- The edges a, b of column c's footprint, its F scaled to its area A (a
+//  square of area A where F is degenerate)
+void footprintEdges
+(
+    const Foam::runOutFields& columns,
+    const Foam::label c,
+    double a[2],
+    double b[2]
+)
+{
+    const double A = columns.A[c];
+    const double F00 = columns.F[0][c], F01 = columns.F[1][c];
+    const double F10 = columns.F[2][c], F11 = columns.F[3][c];
+    const double det = std::abs(F00*F11 - F01*F10);
+    if (det > 1e-12*A && A > 0)
+    {
+        const double s = std::sqrt(A/det);
+        a[0] = s*F00;
+        a[1] = s*F10;
+        b[0] = s*F01;
+        b[1] = s*F11;
+    }
+    else
+    {
+        const double s = std::sqrt(Foam::max(A, 0.0));
+        a[0] = s; a[1] = 0;
+        b[0] = 0; b[1] = s;
+    }
 }
 
 } // End anonymous namespace
@@ -137,10 +169,6 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
     const double* cm = columns.m;
     const double* cV = columns.V;
     const double* cA = columns.A;
-    const double* F00 = columns.F[0];
-    const double* F01 = columns.F[1];
-    const double* F10 = columns.F[2];
-    const double* F11 = columns.F[3];
 
     // The divergence of the column's velocity (trace of gradU): the layer's
     // thinning rate over its depth
@@ -175,21 +203,7 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
         col.h = A > 0 ? cV[c]/A : 0;
 
         // The footprint's shape with the column's area
-        const double det = std::abs(F00[c]*F11[c] - F01[c]*F10[c]);
-        if (det > 1e-12*A && A > 0)
-        {
-            const double s = std::sqrt(A/det);
-            col.a[0] = s*F00[c];
-            col.a[1] = s*F10[c];
-            col.b[0] = s*F01[c];
-            col.b[1] = s*F11[c];
-        }
-        else
-        {
-            const double s = std::sqrt(Foam::max(A, 0.0));
-            col.a[0] = s; col.a[1] = 0;
-            col.b[0] = 0; col.b[1] = s;
-        }
+        footprintEdges(columns, c, col.a, col.b);
         col.na = subdivisions(std::hypot(col.a[0], col.a[1]), sh);
         col.nb = subdivisions(std::hypot(col.b[0], col.b[1]), sh);
         col.nz = subdivisions(col.h, spacing_.z());
@@ -325,6 +339,169 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
         *inRegion = std::move(converted);
     }
     return t;
+}
+
+
+Foam::columnsTo3D::mergedColumns Foam::columnsTo3D::merge
+(
+    const runOutFields& columns
+) const
+{
+    // runOutFields' members in the order of mergedColumns::fields_
+    enum field { X, Y, UX, UY, M, V, A, F0, G0 = F0 + 4 };
+    const bool withGradU = columns.gradU[0] != nullptr;
+    const int nFields = withGradU ? G0 + 4 : G0;
+    const double* const source[G0 + 4] =
+    {
+        columns.x, columns.y, columns.ux, columns.uy, columns.m, columns.V,
+        columns.A, columns.F[0], columns.F[1], columns.F[2], columns.F[3],
+        columns.gradU[0], columns.gradU[1], columns.gradU[2], columns.gradU[3]
+    };
+
+    // The cells of the spacing; edges measured as convert measures them
+    const scalar sx = spacing_.x(), sy = spacing_.y();
+    const scalar sh = std::sqrt(sx*sy);
+    const point& lo = region_.min();
+    const point& hi = region_.max();
+    const label nbx =
+        Foam::max(label(1), label(std::ceil((hi.x() - lo.x())/sx)));
+    const label nby =
+        Foam::max(label(1), label(std::ceil((hi.y() - lo.y())/sy)));
+
+    const label nCol = columns.n;
+    mergedColumns merged;
+    std::vector<std::vector<double>>& out = merged.fields_;
+    out.assign(nFields, std::vector<double>());
+    merged.into.resize(nCol);
+    std::vector<label> firstSource, nSources;
+    std::unordered_map<int64_t, label> columnOfCell;
+
+    // Sums in source order: the mass-weighted ones as m x, m u, m gradU
+    for (label c = 0; c < nCol; ++c)
+    {
+        const double x = columns.x[c], y = columns.y[c], m = columns.m[c];
+        double a[2], b[2];
+        footprintEdges(columns, c, a, b);
+        const bool small =
+            std::hypot(a[0], a[1]) < sh && std::hypot(b[0], b[1]) < sh;
+        const bool inside =
+            columns.A[c] > 0 && m > 0
+         && x >= lo.x() && x <= hi.x() && y >= lo.y() && y <= hi.y();
+
+        label k = label(firstSource.size());
+        if (small && inside)
+        {
+            const label ix = Foam::min(label((x - lo.x())/sx), nbx - 1);
+            const label iy = Foam::min(label((y - lo.y())/sy), nby - 1);
+            k = columnOfCell.emplace(ix + int64_t(nbx)*iy, k).first->second;
+        }
+        if (k == label(firstSource.size()))
+        {
+            firstSource.push_back(c);
+            nSources.push_back(0);
+            for (std::vector<double>& f : out)
+            {
+                f.push_back(0);
+            }
+        }
+        merged.into[c] = k;
+        ++nSources[k];
+        for (const int f : {X, Y, UX, UY})
+        {
+            out[f][k] += m*source[f][c];
+        }
+        for (const int f : {M, V, A})
+        {
+            out[f][k] += source[f][c];
+        }
+        for (int f = G0; f < nFields; ++f)
+        {
+            out[f][k] += m*source[f][c];
+        }
+        merged.kineticEnergySource +=
+            0.5*m*(sqr(columns.ux[c]) + sqr(columns.uy[c]));
+    }
+
+    // A column alone in its cell, or not merged, exactly as it was; the
+    // merged ones their means and a square footprint
+    for (size_t k = 0; k < firstSource.size(); ++k)
+    {
+        if (nSources[k] == 1)
+        {
+            for (int f = 0; f < nFields; ++f)
+            {
+                out[f][k] = source[f][firstSource[k]];
+            }
+        }
+        else
+        {
+            const double m = out[M][k];
+            for (const int f : {X, Y, UX, UY})
+            {
+                out[f][k] /= m;
+            }
+            for (int f = G0; f < nFields; ++f)
+            {
+                out[f][k] /= m;
+            }
+            out[F0][k] = out[F0 + 3][k] = 1;
+            out[F0 + 1][k] = out[F0 + 2][k] = 0;
+            ++merged.nMerged;
+            merged.nMergedSource += nSources[k];
+        }
+        merged.kineticEnergy +=
+            0.5*out[M][k]*(sqr(out[UX][k]) + sqr(out[UY][k]));
+    }
+    return merged;
+}
+
+
+Foam::runOutFields Foam::columnsTo3D::mergedColumns::view() const
+{
+    runOutFields v;
+    const std::vector<std::vector<double>>& f = fields_;
+    v.n = label(f[0].size());
+    v.x = f[0].data();
+    v.y = f[1].data();
+    v.ux = f[2].data();
+    v.uy = f[3].data();
+    v.m = f[4].data();
+    v.V = f[5].data();
+    v.A = f[6].data();
+    for (int k = 0; k < 4; ++k)
+    {
+        v.F[k] = f[7 + k].data();
+        v.gradU[k] = f.size() > 11 ? f[11 + k].data() : nullptr;
+    }
+    return v;
+}
+
+
+std::vector<char> Foam::columnsTo3D::mergedColumns::perSource
+(
+    const std::vector<char>& merged
+) const
+{
+    std::vector<char> flags(into.size());
+    for (size_t c = 0; c < into.size(); ++c)
+    {
+        flags[c] = merged[into[c]];
+    }
+    return flags;
+}
+
+
+void Foam::columnsTo3D::mergedColumns::report(Ostream& os) const
+{
+    os  << "Merged " << nMergedSource << " of " << into.size()
+        << " columns, smaller than the 3D particle spacing, into "
+        << nMerged << " (one per cell of the spacing): "
+        << fields_[0].size() << " columns to convert" << nl
+        << "    kinetic energy of the horizontal motion " << kineticEnergySource
+        << " J before, " << kineticEnergy << " J after (relative change "
+        << (kineticEnergy - kineticEnergySource)
+          /Foam::max(kineticEnergySource, VSMALL)
+        << ": the velocity differences within a cell)" << nl;
 }
 
 
