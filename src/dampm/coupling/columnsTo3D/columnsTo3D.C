@@ -96,6 +96,47 @@ void footprintEdges
     }
 }
 
+
+//- The cell of a grid of the spacing (from the region's lower corner) that
+//  column c is merged in: -1 unless it lies in the region, has mass and
+//  area, and is smaller than the spacing s_h along both edges
+int64_t mergeCell
+(
+    const Foam::runOutFields& columns,
+    const Foam::label c,
+    const Foam::boundBox& region,
+    const Foam::vector& spacing
+)
+{
+    const double x = columns.x[c], y = columns.y[c];
+    const Foam::point& lo = region.min();
+    const Foam::point& hi = region.max();
+    const double sh = std::sqrt(spacing.x()*spacing.y());
+    double a[2], b[2];
+    footprintEdges(columns, c, a, b);
+    if
+    (
+        !(columns.A[c] > 0 && columns.m[c] > 0)
+     || !(x >= lo.x() && x <= hi.x() && y >= lo.y() && y <= hi.y())
+     || !(std::hypot(a[0], a[1]) < sh && std::hypot(b[0], b[1]) < sh)
+    )
+    {
+        return -1;
+    }
+    // (Clamped: a centre on the upper side is in the last cell)
+    const int64_t nbx = std::max
+    (
+        int64_t(1), int64_t(std::ceil((hi.x() - lo.x())/spacing.x()))
+    );
+    const int64_t nby = std::max
+    (
+        int64_t(1), int64_t(std::ceil((hi.y() - lo.y())/spacing.y()))
+    );
+    const int64_t ix = std::min(int64_t((x - lo.x())/spacing.x()), nbx - 1);
+    const int64_t iy = std::min(int64_t((y - lo.y())/spacing.y()), nby - 1);
+    return ix + nbx*iy;
+}
+
 } // End anonymous namespace
 
 
@@ -347,26 +388,15 @@ Foam::columnsTo3D::mergedColumns Foam::columnsTo3D::merge
     const runOutFields& columns
 ) const
 {
-    // runOutFields' members in the order of mergedColumns::fields_
-    enum field { X, Y, UX, UY, M, V, A, F0, G0 = F0 + 4 };
+    typedef mergedColumns mc;
     const bool withGradU = columns.gradU[0] != nullptr;
-    const int nFields = withGradU ? G0 + 4 : G0;
-    const double* const source[G0 + 4] =
+    const int nFields = withGradU ? mc::nAll : mc::G0;
+    const double* const source[mc::nAll] =
     {
         columns.x, columns.y, columns.ux, columns.uy, columns.m, columns.V,
         columns.A, columns.F[0], columns.F[1], columns.F[2], columns.F[3],
         columns.gradU[0], columns.gradU[1], columns.gradU[2], columns.gradU[3]
     };
-
-    // The cells of the spacing; edges measured as convert measures them
-    const scalar sx = spacing_.x(), sy = spacing_.y();
-    const scalar sh = std::sqrt(sx*sy);
-    const point& lo = region_.min();
-    const point& hi = region_.max();
-    const label nbx =
-        Foam::max(label(1), label(std::ceil((hi.x() - lo.x())/sx)));
-    const label nby =
-        Foam::max(label(1), label(std::ceil((hi.y() - lo.y())/sy)));
 
     const label nCol = columns.n;
     mergedColumns merged;
@@ -379,21 +409,12 @@ Foam::columnsTo3D::mergedColumns Foam::columnsTo3D::merge
     // Sums in source order: the mass-weighted ones as m x, m u, m gradU
     for (label c = 0; c < nCol; ++c)
     {
-        const double x = columns.x[c], y = columns.y[c], m = columns.m[c];
-        double a[2], b[2];
-        footprintEdges(columns, c, a, b);
-        const bool small =
-            std::hypot(a[0], a[1]) < sh && std::hypot(b[0], b[1]) < sh;
-        const bool inside =
-            columns.A[c] > 0 && m > 0
-         && x >= lo.x() && x <= hi.x() && y >= lo.y() && y <= hi.y();
-
+        const double m = columns.m[c];
+        const int64_t cell = mergeCell(columns, c, region_, spacing_);
         label k = label(firstSource.size());
-        if (small && inside)
+        if (cell >= 0)
         {
-            const label ix = Foam::min(label((x - lo.x())/sx), nbx - 1);
-            const label iy = Foam::min(label((y - lo.y())/sy), nby - 1);
-            k = columnOfCell.emplace(ix + int64_t(nbx)*iy, k).first->second;
+            k = columnOfCell.emplace(cell, k).first->second;
         }
         if (k == label(firstSource.size()))
         {
@@ -406,15 +427,15 @@ Foam::columnsTo3D::mergedColumns Foam::columnsTo3D::merge
         }
         merged.into[c] = k;
         ++nSources[k];
-        for (const int f : {X, Y, UX, UY})
+        for (const int f : {mc::X, mc::Y, mc::UX, mc::UY})
         {
             out[f][k] += m*source[f][c];
         }
-        for (const int f : {M, V, A})
+        for (const int f : {mc::M, mc::V, mc::A})
         {
             out[f][k] += source[f][c];
         }
-        for (int f = G0; f < nFields; ++f)
+        for (int f = mc::G0; f < nFields; ++f)
         {
             out[f][k] += m*source[f][c];
         }
@@ -435,22 +456,22 @@ Foam::columnsTo3D::mergedColumns Foam::columnsTo3D::merge
         }
         else
         {
-            const double m = out[M][k];
-            for (const int f : {X, Y, UX, UY})
+            const double m = out[mc::M][k];
+            for (const int f : {mc::X, mc::Y, mc::UX, mc::UY})
             {
                 out[f][k] /= m;
             }
-            for (int f = G0; f < nFields; ++f)
+            for (int f = mc::G0; f < nFields; ++f)
             {
                 out[f][k] /= m;
             }
-            out[F0][k] = out[F0 + 3][k] = 1;
-            out[F0 + 1][k] = out[F0 + 2][k] = 0;
+            out[mc::F0][k] = out[mc::F0 + 3][k] = 1;
+            out[mc::F0 + 1][k] = out[mc::F0 + 2][k] = 0;
             ++merged.nMerged;
             merged.nMergedSource += nSources[k];
         }
         merged.kineticEnergy +=
-            0.5*out[M][k]*(sqr(out[UX][k]) + sqr(out[UY][k]));
+            0.5*out[mc::M][k]*(sqr(out[mc::UX][k]) + sqr(out[mc::UY][k]));
     }
     return merged;
 }
@@ -460,18 +481,18 @@ Foam::runOutFields Foam::columnsTo3D::mergedColumns::view() const
 {
     runOutFields v;
     const std::vector<std::vector<double>>& f = fields_;
-    v.n = label(f[0].size());
-    v.x = f[0].data();
-    v.y = f[1].data();
-    v.ux = f[2].data();
-    v.uy = f[3].data();
-    v.m = f[4].data();
-    v.V = f[5].data();
-    v.A = f[6].data();
+    v.n = label(f[X].size());
+    v.x = f[X].data();
+    v.y = f[Y].data();
+    v.ux = f[UX].data();
+    v.uy = f[UY].data();
+    v.m = f[M].data();
+    v.V = f[V].data();
+    v.A = f[A].data();
     for (int k = 0; k < 4; ++k)
     {
-        v.F[k] = f[7 + k].data();
-        v.gradU[k] = f.size() > 11 ? f[11 + k].data() : nullptr;
+        v.F[k] = f[F0 + k].data();
+        v.gradU[k] = f.size() > G0 ? f[G0 + k].data() : nullptr;
     }
     return v;
 }
