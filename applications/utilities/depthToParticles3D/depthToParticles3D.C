@@ -139,25 +139,24 @@ int main(int argc, char *argv[])
         columnsTo3D::verticalNames[vertical]
     );
     particleArrays particles3D(flow3D.particles());
-    std::vector<char> converted;
-    columnsTo3D::totals totals;
-    if (args.found("merge"))
+    // With -merge the merged columns are converted (their storage kept
+    // for the conversion), and the flags per column are their source's
+    const bool merge = args.found("merge");
+    columnsTo3D::mergedColumns merged;
+    if (merge)
     {
-        const columnsTo3D::mergedColumns merged =
-            conversion.merge(columns.runOut());
+        merged = conversion.merge(columns.runOut());
         merged.report(Info);
-        totals = conversion.convert
-        (
-            merged.view(), particles3D, flow3D.stress(), &converted
-        );
-        converted = merged.perSource(converted);
     }
-    else
+    std::vector<char> converted;
+    const columnsTo3D::totals totals = conversion.convert
+    (
+        merge ? merged.view() : columns.runOut(),
+        particles3D, flow3D.stress(), &converted
+    );
+    if (merge)
     {
-        totals = conversion.convert
-        (
-            columns.runOut(), particles3D, flow3D.stress(), &converted
-        );
+        converted = merged.perSource(converted);
     }
 
     #include "checkConversion.H"

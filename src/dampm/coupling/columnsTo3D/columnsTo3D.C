@@ -97,6 +97,24 @@ void footprintEdges
 }
 
 
+//- Does column c have mass and area, and its centre within the region's
+//  x-y bounds?
+bool convertible
+(
+    const Foam::runOutFields& columns,
+    const Foam::label c,
+    const Foam::boundBox& region
+)
+{
+    const double x = columns.x[c], y = columns.y[c];
+    const Foam::point& lo = region.min();
+    const Foam::point& hi = region.max();
+    return
+        columns.A[c] > 0 && columns.m[c] > 0
+     && x >= lo.x() && x <= hi.x() && y >= lo.y() && y <= hi.y();
+}
+
+
 //- The cell of a grid of the spacing (from the region's lower corner) that
 //  column c is merged in: -1 unless it lies in the region, has mass and
 //  area, and is smaller than the spacing s_h along both edges
@@ -116,8 +134,7 @@ int64_t mergeCell
     footprintEdges(columns, c, a, b);
     if
     (
-        !(columns.A[c] > 0 && columns.m[c] > 0)
-     || !(x >= lo.x() && x <= hi.x() && y >= lo.y() && y <= hi.y())
+        !convertible(columns, c, region)
      || !(std::hypot(a[0], a[1]) < sh && std::hypot(b[0], b[1]) < sh)
     )
     {
@@ -252,10 +269,7 @@ Foam::columnsTo3D::totals Foam::columnsTo3D::convert
         // Inside: the centre within the region's x-y bounds (the particles
         // are kept inside them, at most half a footprint away), the column
         // between the region's bottom and top
-        bool inside =
-            A > 0 && cm[c] > 0
-         && col.x >= lo.x() && col.x <= hi.x()
-         && col.y >= lo.y() && col.y <= hi.y();
+        bool inside = convertible(columns, c, region_);
         if (inside)
         {
             double zBed = GREAT, zTop = -GREAT;
