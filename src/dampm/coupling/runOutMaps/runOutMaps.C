@@ -50,6 +50,84 @@ Foam::runOutMaps::runOutMaps
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::runOutMaps::scatterBand
+(
+    const gridGeometry& g,
+    const particleArrays& particles,
+    const int32_t rows[2],
+    double* sums,
+    int32_t lo[2],
+    int32_t hi[2]
+)
+{
+    // The lattice and the arrays in locals: stores into the sums cannot
+    // then be taken to change them (twice the speed of reading them
+    // through g and the particles in the loop)
+    const double origin[2] = {g.origin[0], g.origin[1]};
+    const double invDx[2] = {g.invDx[0], g.invDx[1]};
+    const double offset[2] = {double(g.offset[0]), double(g.offset[1])};
+    const int32_t nCells[2] = {g.nCells[0], g.nCells[1]};
+    const int32_t r0 = rows[0], r1 = rows[1];
+    const gridGeometry::index sy = g.nodeStride[1];
+    const gridGeometry::index first = g.nodeIndex(0, 0, 0);
+    const label n = particles.size();
+    const double* x = particles.component(particleArrays::X);
+    const double* y = particles.component(particleArrays::Y);
+    const double* ux = particles.component(particleArrays::UX);
+    const double* uy = particles.component(particleArrays::UY);
+    const double* m = particles.component(particleArrays::M);
+    const double* V = particles.component(particleArrays::VOL);
+    static_assert(nSums == 4, "a node's sums are four lanes");
+
+    int32_t boxLo[2] = {lo[0], lo[1]}, boxHi[2] = {hi[0], hi[1]};
+    for (label p = 0; p < n; ++p)
+    {
+        const double eta = (y[p] - origin[1])*invDx[1] - offset[1];
+        if (!(eta >= 0 && eta <= nCells[1]))
+        {
+            continue;
+        }
+        const int32_t j = std::min(int32_t(eta), nCells[1] - 1);
+        if (j + 1 < r0 || j >= r1)
+        {
+            continue;
+        }
+        const double xi = (x[p] - origin[0])*invDx[0] - offset[0];
+        if (!(xi >= 0 && xi <= nCells[0]))
+        {
+            continue;
+        }
+        const int32_t i = std::min(int32_t(xi), nCells[0] - 1);
+        const double fx = xi - i, fy = eta - j;
+        const double w[4] =
+            {(1 - fx)*(1 - fy), fx*(1 - fy), (1 - fx)*fy, fx*fy};
+        // A corner adds (w m, w m ux, w m uy, w V) = (w M) P: w m times
+        // (1, ux, uy) is exact, and w times 1 is w
+        const lanes4 M{m[p], m[p], m[p], 1};
+        const lanes4 P{1, ux[p], uy[p], V[p]};
+        const gridGeometry::index k = first + i + sy*j;
+        for (int c = 0; c < 4; ++c)
+        {
+            const int32_t row = j + (c >> 1);
+            if (row >= r0 && row < r1)
+            {
+                asLanes<lanes4>(sums + nSums*(k + (c & 1) + (c >> 1)*sy)) +=
+                    (w[c]*M)*P;
+            }
+        }
+        boxLo[0] = std::min(boxLo[0], i);
+        boxLo[1] = std::min(boxLo[1], j);
+        boxHi[0] = std::max(boxHi[0], i + 2);
+        boxHi[1] = std::max(boxHi[1], j + 2);
+    }
+    for (int d = 0; d < 2; ++d)
+    {
+        lo[d] = boxLo[d];
+        hi[d] = boxHi[d];
+    }
+}
+
+
 void Foam::runOutMaps::sumProcessors(int32_t lo[2], int32_t hi[2])
 {
     // The box of cells every processor's particles touched, and the node
@@ -171,13 +249,6 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     // particles' y, and adds those with a node in its band, in particle
     // order, so that every node's sums are those of one thread whatever
     // the number of threads
-    const label n = particles.size();
-    const double* x = particles.component(particleArrays::X);
-    const double* y = particles.component(particleArrays::Y);
-    const double* ux = particles.component(particleArrays::UX);
-    const double* uy = particles.component(particleArrays::UY);
-    const double* m = particles.component(particleArrays::M);
-    const double* V = particles.component(particleArrays::VOL);
     const int32_t nRows = g.nCells[1] + 1;
     const bool flowed = !active_.empty();
     const int32_t split0 = flowed ? active_.lo[1] - gridGeometry::nGhost : 0;
@@ -188,53 +259,15 @@ void Foam::runOutMaps::update(const particleArrays& particles)
     {
         const threadTeam team = thisThread();
         const int tid = team.index, nThreads = team.size;
-        const int32_t r0 =
-            tid ? split0 + (split1 - split0)*tid/nThreads : 0;
-        const int32_t r1 = tid + 1 < nThreads
-          ? split0 + (split1 - split0)*(tid + 1)/nThreads
-          : nRows;
-        int32_t bandLo[2] = {g.nCells[0], g.nCells[1]}, bandHi[2] = {0, 0};
-        for (label p = 0; p < n; ++p)
+        const int32_t rows[2] =
         {
-            const double eta = g.local(1, y[p]);
-            if (!(eta >= 0 && eta <= g.nCells[1]))
-            {
-                continue;
-            }
-            const int32_t j = std::min(int32_t(eta), g.nCells[1] - 1);
-            if (j + 1 < r0 || j >= r1)
-            {
-                continue;
-            }
-            const double xi = g.local(0, x[p]);
-            if (!(xi >= 0 && xi <= g.nCells[0]))
-            {
-                continue;
-            }
-            const int32_t i = std::min(int32_t(xi), g.nCells[0] - 1);
-            const double fx = xi - i, fy = eta - j;
-            const double w[4] =
-                {(1 - fx)*(1 - fy), fx*(1 - fy), (1 - fx)*fy, fx*fy};
-            for (int c = 0; c < 4; ++c)
-            {
-                const int32_t row = j + (c >> 1);
-                if (row < r0 || row >= r1)
-                {
-                    continue;
-                }
-                // (w m, w m ux, w m uy, w V): w m times (1, ux, uy) is exact
-                static_assert(nSums == 4, "a node's sums are four lanes");
-                const double wm = w[c]*m[p];
-                asLanes<lanes4>
-                (
-                    sums_.data() + nSums*g.nodeIndex(i + (c & 1), row, 0)
-                ) += lanes4{wm, wm, wm, w[c]}*lanes4{1, ux[p], uy[p], V[p]};
-            }
-            bandLo[0] = std::min(bandLo[0], i);
-            bandLo[1] = std::min(bandLo[1], j);
-            bandHi[0] = std::max(bandHi[0], i + 2);
-            bandHi[1] = std::max(bandHi[1], j + 2);
-        }
+            tid ? split0 + (split1 - split0)*tid/nThreads : 0,
+            tid + 1 < nThreads
+          ? split0 + (split1 - split0)*(tid + 1)/nThreads
+          : nRows
+        };
+        int32_t bandLo[2] = {g.nCells[0], g.nCells[1]}, bandHi[2] = {0, 0};
+        scatterBand(g, particles, rows, sums_.data(), bandLo, bandHi);
         #pragma omp critical(runOutMapsBounds)
         for (int d = 0; d < 2; ++d)
         {
