@@ -42,10 +42,14 @@ Description
 #include "barrierProbe.H"
 #include "surfaceCase.H"
 #include "threadCount.H"
+#include "scratchDir.H"
+#include "terrainGeometry.H"
+#include "OSspecific.H"
 #include <gtest/gtest.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <random>
 
 using namespace Foam;
@@ -254,6 +258,108 @@ TEST(particleGuard, TerrainGuardStopsParticlesHalfACellBelowTheSurface)
     EXPECT_LT(mag(x - (x1 + depth*nt)), tol);
     EXPECT_NEAR(probe.distance(x), -depth, tol);
     EXPECT_LT(mag(v - contactVelocity(u, nt, "slip")), 1e-12);
+}
+
+
+// A raster terrain, screened by the highest elevation of each column of
+// cells: particles lying 0.01 m above its gentle slope are cleared without
+// an exact test, those 0.07 m below (deeper than the guard's 0.05 m) all
+// tested; and of 20,000 random moves about the surface, by up to a cell
+// (within the grid), every one that ends deeper than the guard's depth
+// from a start that is not is stopped, as the exact test finds them
+TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
+{
+    // Samples every 0.05 m from (-0.025 -0.025): over the probes' grid,
+    // local coordinates the map's
+    const auto Zexact = [](const double x, const double y)
+    {
+        return 0.5 + 0.1*x - 0.05*y + 0.01*std::sin(7*x)*std::cos(5*y);
+    };
+    const fileName dir(scratchDir("particleGuardRaster"));
+    mkDir(dir);
+    {
+        std::ofstream os(dir/"gentle.asc");
+        os.precision(17);
+        os  << "ncols 22\nnrows 26\nxllcorner -0.05\nyllcorner -0.05\n"
+            << "cellsize 0.05\n";
+        for (int j = 25; j >= 0; --j)
+        {
+            for (int i = 0; i < 22; ++i)
+            {
+                os  << (i ? " " : "")
+                    << Zexact(-0.025 + 0.05*i, -0.025 + 0.05*j);
+            }
+            os  << "\n";
+        }
+    }
+    barrierProbe probe
+    (
+        "type terrain; topography raster; rasterCoeffs { file gentle.asc;"
+        " offset (0 0); } contact slip;",
+        dir
+    );
+    const auto& terrain =
+        dynamic_cast<const barrierGeometries::terrainGeometry&>
+        (
+            probe.geometry()
+        ).topography();
+    const scalar depth = 0.5*probe.grid().hMin();
+
+    constexpr label n = 400;
+    for (const scalar dz : {0.01, -0.07})
+    {
+        pointField x0(n), x(n);
+        vectorField u(n, vector(0.5, 0, 0));
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar px = 0.02 + 0.9*(i%20)/19, py = 0.02 + 1.1*(i/20)/19;
+            x0[i] = point(px, py, terrain.Z(px, py) + dz);
+            x[i] = point(px + 0.005, py, terrain.Z(px + 0.005, py) + dz);
+        }
+        vector F;
+        EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
+        EXPECT_EQ(probe.wall().guard().nTested(), dz > 0 ? 0 : n) << dz;
+    }
+
+    constexpr label nRandom = 20000;
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(-1, 1);
+    pointField x0(nRandom), x1(nRandom);
+    vectorField v0(nRandom);
+    for (label i = 0; i < nRandom; ++i)
+    {
+        const scalar px = 0.5 + 0.39*u(rng), py = 0.6 + 0.44*u(rng);
+        x0[i] = point(px, py, terrain.Z(px, py) + 0.1*u(rng));
+        const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
+        x1[i] = x0[i] + move;
+        v0[i] = move/1e-3;
+    }
+    boolList deep0, deep1;
+    probe.geometry().deeperThan(x0, depth, deep0);
+    probe.geometry().deeperThan(x1, depth, deep1);
+    label nEntered = 0;
+    forAll(x0, i)
+    {
+        nEntered += !deep0[i] && deep1[i];
+    }
+    pointField x(x1);
+    vectorField v(v0);
+    vector F;
+    EXPECT_EQ(probe.entries(x0, x, v, 0.01, 1e-3, F), nEntered);
+    EXPECT_GT(nEntered, 1000);
+    // The screen cleared some, not all
+    EXPECT_LT(probe.wall().guard().nTested(), nRandom);
+    forAll(x, i)
+    {
+        if (!deep0[i] && deep1[i])
+        {
+            EXPECT_NE(x[i], x1[i]) << i;
+        }
+        else
+        {
+            EXPECT_EQ(x[i], x1[i]) << i;
+        }
+    }
 }
 
 

@@ -200,6 +200,82 @@ TEST(terrainRaster, PlanarTerrainIsInterpolatedExactlyWithExactGradient)
 }
 
 
+// highestOver, the particles' guard's bound of a column: on a random raster
+// no value in the rectangle (inside the hull or beyond it, where Z is
+// clamped) exceeds it; on a planar raster it is the highest corner (Z is
+// bilinear, so its maximum over a rectangle is at a corner of a piece)
+TEST(terrainRaster, HighestOverARectangleBoundsItsValues)
+{
+    const int nx = 9;
+    const int ny = 7;
+    const scalarList values(uniformSamples(nx*ny, 3, 100, 140));
+    const std::vector<std::pair<std::string, std::string>> header =
+    {
+        {"ncols", std::to_string(nx)}, {"nrows", std::to_string(ny)},
+        {"xllcorner", "1500000"}, {"yllcorner", "5200000"},
+        {"cellsize", "2.5"}
+    };
+    terrainRaster random
+    (
+        writeText
+        (
+            "highest.asc",
+            ascText(header, nx, ny, [&](int i, int j)
+            {
+                return values[i + nx*j];
+            })
+        )
+    );
+    random.setOffset(random.mapLowerLeft());
+    terrainRaster plane
+    (
+        writeText
+        (
+            "highestPlanar.asc",
+            ascText(header, nx, ny, [&](int i, int j)
+            {
+                return planar(X0 + 1.25 + 2.5*i, Y0 + 1.25 + 2.5*j);
+            })
+        )
+    );
+    plane.setOffset(plane.mapLowerLeft());
+
+    std::mt19937 gen(17);
+    std::uniform_real_distribution<double> corner(-4, 26), size(0, 6), u(0, 1);
+    for (int r = 0; r < 400; ++r)
+    {
+        // Every fourth rectangle a sliver of zero width
+        const double x0 = corner(gen), y0 = corner(gen);
+        const double x1 = x0 + (r % 4 ? size(gen) : 0), y1 = y0 + size(gen);
+        const double top = random.highestOver(x0, x1, y0, y1);
+        EXPECT_LE(top, 140*(1 + 1e-12));
+        for (int k = 0; k < 200; ++k)
+        {
+            const double x = k < 2 ? (k ? x1 : x0) : x0 + (x1 - x0)*u(gen);
+            const double y = k < 2 ? (k ? y1 : y0) : y0 + (y1 - y0)*u(gen);
+            ASSERT_LE(random.Z(x, y), top)
+                << "(" << x << " " << y << ") in " << x0 << " " << x1 << " "
+                << y0 << " " << y1;
+        }
+
+        // Inside the hull, a plane's highest corner
+        const double a = 1.25 + 0.5*(x0 + 4), b = 1.25 + 0.4*(y0 + 4);
+        const double c = a + 0.5*size(gen), d = b + 0.5*size(gen);
+        double highest = -GREAT;
+        for (const double x : {a, c})
+        {
+            for (const double y : {b, d})
+            {
+                highest = std::max(highest, plane.Z(x, y));
+            }
+        }
+        const double planeTop = plane.highestOver(a, c, b, d);
+        EXPECT_GE(planeTop, highest);
+        EXPECT_LT(planeTop - highest, 1e-7) << a << " " << c << " " << b;
+    }
+}
+
+
 TEST(terrainRaster, NorthRowComesFirstInTheFile)
 {
     const terrainRaster t

@@ -13,6 +13,7 @@ License
 #include "IOmanip.H"
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
+#include <cmath>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -117,6 +118,35 @@ void Foam::barrierGeometries::terrainGeometry::deeperThan
             scalar Zx, Zy;
             const scalar Z0 = surface(x, y, Zx, Zy);
             in[i] = (points[i].z() - Z0)/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
+        }
+    }
+}
+
+
+void Foam::barrierGeometries::terrainGeometry::columnTops
+(
+    const gridGeometry& g,
+    std::vector<double>& top
+) const
+{
+    // deeperThan's first test, z - Z < -depth, fails wherever z is at
+    // least the highest Z of the column
+    top.assign(size_t(g.nCells[0])*g.nCells[1], 0.0);
+    for (gridGeometry::index j = 0; j < g.nCells[1]; ++j)
+    {
+        for (gridGeometry::index i = 0; i < g.nCells[0]; ++i)
+        {
+            const double highest = topography_->highestOver
+            (
+                g.nodeCoord(0, i), g.nodeCoord(0, i + 1),
+                g.nodeCoord(1, j), g.nodeCoord(1, j + 1)
+            );
+            if (!std::isfinite(highest))
+            {
+                top.clear();
+                return;
+            }
+            top[i + g.nCells[0]*j] = highest;
         }
     }
 }

@@ -15,6 +15,7 @@ License
 #include "OSspecific.H"
 #include "exactPrecision.H"
 #include "geoTiffCodec.H"
+#include "DynamicList.H"
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -792,6 +793,54 @@ Foam::boundBox Foam::terrainRaster::cellBounds() const
         point(x(0) - dx_/2, y(0) - dy_/2, 0),
         point(x(nx_ - 1) + dx_/2, y(ny_ - 1) + dy_/2, 0)
     );
+}
+
+
+Foam::scalar Foam::terrainRaster::highestOver
+(
+    const scalar x0,
+    const scalar x1,
+    const scalar y0,
+    const scalar y1
+) const
+{
+    // Z is bilinear between consecutive sample lines (and constant beyond
+    // the hull), so on each piece of the rectangle between them it is
+    // highest at a corner of the piece: Z at the rectangle's corners and
+    // where the sample lines cross its edges and each other bounds it.
+    // The rectangle is widened by a little more than the rounding of
+    // positions to sample units.
+    const auto breaks = [](scalar a, scalar b, const label n, const scalar lo,
+        const scalar h, DynamicList<scalar>& at)
+    {
+        const scalar widen = 1e-9*(std::abs(a) + std::abs(b) + h);
+        a -= widen;
+        b += widen;
+        at.clear();
+        at.append(a);
+        const scalar first = std::max(std::ceil((a - lo)/h), scalar(0));
+        const scalar last = std::min(std::floor((b - lo)/h), scalar(n - 1));
+        for (scalar k = first; k <= last; ++k)
+        {
+            at.append(lo + k*h);
+        }
+        at.append(b);
+    };
+    DynamicList<scalar> xs, ys;
+    breaks(x0, x1, nx_, x0_, dx_, xs);
+    breaks(y0, y1, ny_, y0_, dy_, ys);
+    scalar highest = -std::numeric_limits<scalar>::infinity(), size = 0;
+    for (const scalar y : ys)
+    {
+        for (const scalar x : xs)
+        {
+            const scalar z = Z(x, y);
+            highest = std::max(highest, z);
+            size = std::max(size, std::abs(z));
+        }
+    }
+    // The rounding of Z: a few ulps of its magnitude
+    return highest + 1e-12*size;
 }
 
 
