@@ -276,6 +276,57 @@ TEST(terrainRaster, HighestOverARectangleBoundsItsValues)
 }
 
 
+// highestOver in map coordinates (local = map, offset zero), a cliff rising
+// 20 m per m east of sample line 4 from a floor at Z = 0: points stepped by
+// one ulp across the sample line, in slivers a few ulps wide, stay below
+// the bound (a bound found from the line's position in metres, not in
+// sample units, falls short there by the slope times an ulp of x)
+TEST(terrainRaster, HighestOverHoldsAtMapCoordinatesAcrossACliff)
+{
+    const int nx = 9;
+    const int ny = 3;
+    terrainRaster cliff
+    (
+        writeText
+        (
+            "cliff.asc",
+            ascText
+            (
+                {
+                    {"ncols", std::to_string(nx)},
+                    {"nrows", std::to_string(ny)},
+                    {"xllcorner", "1500000"}, {"yllcorner", "5200000"},
+                    {"cellsize", "2.5"}
+                },
+                nx, ny,
+                [](int i, int) { return i > 4 ? 50.0*(i - 4) : 0.0; }
+            )
+        )
+    );
+    // The sample line x = X0 + 1.25 + 4*2.5 (map = local)
+    const double line = X0 + 11.25;
+    const double y = Y0 + 2.5;
+    for (int w = 1; w <= 64; w *= 2)
+    {
+        double a = line;
+        for (int k = 0; k < w; ++k)
+        {
+            a = std::nextafter(a, 0.0);
+        }
+        double b = line;
+        for (int k = 0; k < w; ++k)
+        {
+            b = std::nextafter(b, 2*line);
+        }
+        const double top = cliff.highestOver(a, b, y, y);
+        for (double x = a; x <= b; x = std::nextafter(x, 2*line))
+        {
+            ASSERT_LE(cliff.Z(x, y), top) << w << " " << x - line;
+        }
+    }
+}
+
+
 TEST(terrainRaster, NorthRowComesFirstInTheFile)
 {
     const terrainRaster t

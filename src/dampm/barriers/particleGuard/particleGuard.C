@@ -81,7 +81,7 @@ void Foam::particleGuard::startSearch
     // the barrier: the band bounds their distance from below
     clearance_ = guardDepth_ - 1e-6*g.hMin();
     nodeClearance_.clear();
-    columnClear_.clear();
+    columnClearance_.clear();
     // (3D grids: the screen takes the eight corners of a cell, or a column
     // of cells)
     if (geometry_.exactDistance() && g.dim == 3)
@@ -90,11 +90,12 @@ void Foam::particleGuard::startSearch
     }
     else if (g.dim == 3)
     {
-        geometry_.columnTops(g, columnClear_);
-        for (double& h : columnClear_)
+        geometry_.columnTops(g, columnClearance_);
+        for (double& h : columnClearance_)
         {
-            // The margin covers the rounding of z - h (z near h)
-            h += 1e-6*g.hMin() + 1e-12*std::abs(h) - guardDepth_;
+            // Less the guard's depth and clearance_'s margin; the rounding
+            // of z - h (z near h) too
+            h += 1e-12*std::abs(h) - clearance_;
         }
     }
 }
@@ -201,21 +202,13 @@ bool Foam::particleGuard::mayBeDeep
 {
     // A position off the grid's columns, or not finite, has no column or
     // cell: the exact test answers
-    if (!columnClear_.empty())
+    if (!columnClearance_.empty())
     {
         // Not deeper where at least its column's clearing height
-        const double xi = g.local(0, x), eta = g.local(1, y);
-        const bool onGrid =
-            xi >= 0 && xi <= g.nCells[0] && eta >= 0 && eta <= g.nCells[1];
-        if (!onGrid)
-        {
-            return true;
-        }
-        const gridGeometry::index i =
-            std::min(gridGeometry::index(xi), g.nCells[0] - 1);
-        const gridGeometry::index j =
-            std::min(gridGeometry::index(eta), g.nCells[1] - 1);
-        return !(z >= columnClear_[i + g.nCells[0]*j]);
+        gridGeometry::index i, j;
+        return
+            !g.columnOf(x, y, i, j)
+         || !(z >= columnClearance_[i + g.nCells[0]*j]);
     }
     if (nodeClearance_.empty() || !std::isfinite(x + y + z))
     {

@@ -130,7 +130,13 @@ void Foam::barrierGeometries::terrainGeometry::columnTops
 ) const
 {
     // deeperThan's first test, z - Z < -depth, fails wherever z is at
-    // least the highest Z of the column
+    // least the highest Z of the column. The column widened by far more
+    // than the rounding that puts a point in it (gridGeometry::local)
+    const auto edge = [&](const int d, const gridGeometry::index i)
+    {
+        const double x = g.nodeCoord(d, i);
+        return 1e-9*(std::abs(x) + std::abs(g.origin[d]) + g.dx[d]);
+    };
     top.assign(size_t(g.nCells[0])*g.nCells[1], 0.0);
     for (gridGeometry::index j = 0; j < g.nCells[1]; ++j)
     {
@@ -138,8 +144,10 @@ void Foam::barrierGeometries::terrainGeometry::columnTops
         {
             const double highest = topography_->highestOver
             (
-                g.nodeCoord(0, i), g.nodeCoord(0, i + 1),
-                g.nodeCoord(1, j), g.nodeCoord(1, j + 1)
+                g.nodeCoord(0, i) - edge(0, i),
+                g.nodeCoord(0, i + 1) + edge(0, i + 1),
+                g.nodeCoord(1, j) - edge(1, j),
+                g.nodeCoord(1, j + 1) + edge(1, j + 1)
             );
             if (!std::isfinite(highest))
             {

@@ -60,9 +60,9 @@ void Foam::runOutMaps::scatterBand
     int32_t hi[2]
 )
 {
-    // The lattice and the arrays in locals: stores into the sums cannot
-    // then be taken to change them (twice the speed of reading them
-    // through g and the particles in the loop)
+    // The lattice (as gridGeometry::local has it) and the arrays in
+    // locals: stores into the sums cannot then be taken to change them
+    // (benchmarks/outputShare/results.md)
     const double origin[2] = {g.origin[0], g.origin[1]};
     const double invDx[2] = {g.invDx[0], g.invDx[1]};
     const double offset[2] = {double(g.offset[0]), double(g.offset[1])};

@@ -45,6 +45,38 @@ const Foam::scalar Foam::terrainRaster::noBound =
 namespace
 {
 
+//- The break points of [a, b] in sample units: a, the whole sample lines
+//  strictly between a and b within the hull [0, n - 1], and b
+void sampleBreaks
+(
+    const Foam::scalar a,
+    const Foam::scalar b,
+    const Foam::label n,
+    Foam::DynamicList<Foam::scalar>& at
+)
+{
+    at.clear();
+    at.append(a);
+    const Foam::scalar first = std::max(std::floor(a) + 1, Foam::scalar(0));
+    const Foam::scalar last = std::min(std::ceil(b) - 1, Foam::scalar(n - 1));
+    for (Foam::label k = Foam::label(first); k <= Foam::label(last); ++k)
+    {
+        at.append(k);
+    }
+    at.append(b);
+}
+
+
+//- The first sample of the cell that evaluate takes at s (sample units,
+//  clamped to the hull as it clamps)
+Foam::label cellStart(const Foam::scalar s, const Foam::label n)
+{
+    const Foam::scalar c = !(s >= 0) ? 0 : std::min(s, Foam::scalar(n - 1));
+    return std::min(Foam::label(c), std::max(n - 2, Foam::label(0)));
+}
+
+
+
 static_assert
 (
     std::is_same<Foam::scalar, double>::value,
@@ -804,43 +836,38 @@ Foam::scalar Foam::terrainRaster::highestOver
     const scalar y1
 ) const
 {
-    // Z is bilinear between consecutive sample lines (and constant beyond
-    // the hull), so on each piece of the rectangle between them it is
-    // highest at a corner of the piece: Z at the rectangle's corners and
-    // where the sample lines cross its edges and each other bounds it.
-    // The rectangle is widened by a little more than the rounding of
-    // positions to sample units.
-    const auto breaks = [](scalar a, scalar b, const label n, const scalar lo,
-        const scalar h, DynamicList<scalar>& at)
+    // In sample units as evaluate computes them (monotone in x: every point
+    // of the rectangle lies in [s0, s1]), Z is bilinear between whole
+    // sample lines (and constant beyond the hull), so on each piece of the
+    // rectangle between them it is highest at a corner of the piece
+    DynamicList<scalar> s, t;
+    sampleBreaks((x0 - x0_)*rdx_, (x1 - x0_)*rdx_, nx_, s);
+    sampleBreaks((y0 - y0_)*rdy_, (y1 - y0_)*rdy_, ny_, t);
+    scalar highest = -std::numeric_limits<scalar>::infinity();
+    for (const scalar tb : t)
     {
-        const scalar widen = 1e-9*(std::abs(a) + std::abs(b) + h);
-        a -= widen;
-        b += widen;
-        at.clear();
-        at.append(a);
-        const scalar first = std::max(std::ceil((a - lo)/h), scalar(0));
-        const scalar last = std::min(std::floor((b - lo)/h), scalar(n - 1));
-        for (scalar k = first; k <= last; ++k)
+        for (const scalar sb : s)
         {
-            at.append(lo + k*h);
-        }
-        at.append(b);
-    };
-    DynamicList<scalar> xs, ys;
-    breaks(x0, x1, nx_, x0_, dx_, xs);
-    breaks(y0, y1, ny_, y0_, dy_, ys);
-    scalar highest = -std::numeric_limits<scalar>::infinity(), size = 0;
-    for (const scalar y : ys)
-    {
-        for (const scalar x : xs)
-        {
-            const scalar z = Z(x, y);
-            highest = std::max(highest, z);
-            size = std::max(size, std::abs(z));
+            scalar Z, dZds, dZdt;
+            evaluateUnits(sb, tb, Z, dZds, dZdt);
+            highest = std::max(highest, Z);
         }
     }
-    // The rounding of Z: a few ulps of its magnitude
-    return highest + 1e-12*size;
+
+    // The rounding of a bilinear sum: a few ulps of the largest sample of
+    // the cells (a piece's corner and a point inside it are computed in
+    // different cells where it is a sample line)
+    scalar magnitude = 0;
+    const label i1 = min(cellStart(s.last(), nx_) + 1, nx_ - 1);
+    const label j1 = min(cellStart(t.last(), ny_) + 1, ny_ - 1);
+    for (label j = cellStart(t.first(), ny_); j <= j1; ++j)
+    {
+        for (label i = cellStart(s.first(), nx_); i <= i1; ++i)
+        {
+            magnitude = std::max(magnitude, std::abs(values_[i + nx_*j]));
+        }
+    }
+    return highest + 64*std::numeric_limits<scalar>::epsilon()*magnitude;
 }
 
 
