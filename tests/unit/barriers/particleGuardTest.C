@@ -265,8 +265,10 @@ TEST(particleGuard, TerrainGuardStopsParticlesHalfACellBelowTheSurface)
 // cells: particles lying 0.01 m above its gentle slope are cleared without
 // an exact test, those 0.07 m below (deeper than the guard's 0.05 m) all
 // tested; and of 20,000 random moves about the surface, by up to a cell
-// (within the grid), every one that ends deeper than the guard's depth
-// from a start that is not is stopped, as the exact test finds them
+// (some beyond the grid's sides, where the terrain rises past the edge
+// columns' tops: tested exactly), every one that ends deeper than the
+// guard's depth from a start that is not is stopped, as the exact test
+// finds them
 TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
 {
     // Samples every 0.05 m from (-0.025 -0.025): over the probes' grid,
@@ -328,7 +330,7 @@ TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
     vectorField v0(nRandom);
     for (label i = 0; i < nRandom; ++i)
     {
-        const scalar px = 0.5 + 0.39*u(rng), py = 0.6 + 0.44*u(rng);
+        const scalar px = 0.5 + 0.48*u(rng), py = 0.6 + 0.58*u(rng);
         x0[i] = point(px, py, terrain.Z(px, py) + 0.1*u(rng));
         const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
         x1[i] = x0[i] + move;
@@ -359,6 +361,69 @@ TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
         {
             EXPECT_EQ(x[i], x1[i]) << i;
         }
+    }
+}
+
+
+// A flat terrain at z = 0.4, screened by its columns (the same height
+// everywhere): particles 0.01 m above it are cleared, 0.07 m below all
+// tested; of 20,000 random moves by up to a cell, some ending beyond the
+// grid's sides (no column: tested exactly), every entry deeper than the
+// guard's depth is stopped, as the exact test finds them
+TEST(particleGuard, FlatTerrainScreenedByColumnsAlsoOffTheGrid)
+{
+    barrierProbe probe
+    (
+        "type terrain; topography flat; flatCoeffs { Z0 0.4; } contact slip;"
+    );
+    const scalar depth = 0.5*probe.grid().hMin();
+    constexpr label n = 400;
+    for (const scalar dz : {0.01, -0.07})
+    {
+        pointField x0(n), x(n);
+        vectorField u(n, vector(0.5, 0, 0));
+        for (label i = 0; i < n; ++i)
+        {
+            x0[i] = point(0.02 + 0.9*(i%20)/19, 0.02 + 1.1*(i/20)/19, 0.4 + dz);
+            x[i] = x0[i] + vector(0.005, 0, 0);
+        }
+        vector F;
+        EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
+        EXPECT_EQ(probe.wall().guard().nTested(), dz > 0 ? 0 : n) << dz;
+    }
+
+    constexpr label nRandom = 20000;
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<double> u(-1, 1);
+    pointField x0(nRandom), x1(nRandom);
+    vectorField v0(nRandom);
+    label offGrid = 0;
+    for (label i = 0; i < nRandom; ++i)
+    {
+        x0[i] = point(0.5 + 0.48*u(rng), 0.6 + 0.58*u(rng), 0.4 + 0.1*u(rng));
+        const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
+        x1[i] = x0[i] + move;
+        v0[i] = move/1e-3;
+        offGrid += x1[i].x() < 0 || x1[i].x() > 1 || x1[i].y() < 0
+            || x1[i].y() > 1.2;
+    }
+    EXPECT_GT(offGrid, 100);
+    boolList deep0, deep1;
+    probe.geometry().deeperThan(x0, depth, deep0);
+    probe.geometry().deeperThan(x1, depth, deep1);
+    label nEntered = 0;
+    forAll(x0, i)
+    {
+        nEntered += !deep0[i] && deep1[i];
+    }
+    pointField x(x1);
+    vectorField v(v0);
+    vector F;
+    EXPECT_EQ(probe.entries(x0, x, v, 0.01, 1e-3, F), nEntered);
+    EXPECT_GT(nEntered, 1000);
+    forAll(x, i)
+    {
+        EXPECT_EQ(x[i] != x1[i], !deep0[i] && deep1[i]) << i;
     }
 }
 
