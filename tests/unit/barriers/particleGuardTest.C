@@ -261,14 +261,110 @@ TEST(particleGuard, TerrainGuardStopsParticlesHalfACellBelowTheSurface)
 }
 
 
+namespace
+{
+
+// A terrain's guard screened by columns: 400 particles lying dz above the
+// terrain and sliding along it, none entering; how many were tested
+// exactly
+label testedLyingAt
+(
+    barrierProbe& probe,
+    const topographyModel& terrain,
+    const scalar dz
+)
+{
+    constexpr label n = 400;
+    pointField x0(n), x(n);
+    vectorField u(n, vector(0.5, 0, 0));
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar px = 0.02 + 0.9*(i%20)/19, py = 0.02 + 1.1*(i/20)/19;
+        x0[i] = point(px, py, terrain.Z(px, py) + dz);
+        x[i] = point(px + 0.005, py, terrain.Z(px + 0.005, py) + dz);
+    }
+    vector F;
+    EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
+    return probe.wall().guard().nTested();
+}
+
+
+//- What randomEntries found
+struct randomEntriesResult
+{
+    label tested;
+    label offGrid;
+};
+
+
+// 20,000 particles within 0.1 m of the terrain moved at random by up to a
+// cell (some beyond the grid's sides): every one that ends deeper than the
+// guard's depth from a start that is not (the exact test, deeperThan) is
+// stopped, more than 1000 of them, and the others are left alone
+randomEntriesResult randomEntries
+(
+    barrierProbe& probe,
+    const topographyModel& terrain,
+    const unsigned seed
+)
+{
+    constexpr label n = 20000;
+    const scalar depth = 0.5*probe.grid().hMin();
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    pointField x0(n), x1(n);
+    vectorField v0(n);
+    label offGrid = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar px = 0.5 + 0.48*u(rng), py = 0.6 + 0.58*u(rng);
+        x0[i] = point(px, py, terrain.Z(px, py) + 0.1*u(rng));
+        const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
+        x1[i] = x0[i] + move;
+        v0[i] = move/1e-3;
+        offGrid += x1[i].x() < 0 || x1[i].x() > 1 || x1[i].y() < 0
+            || x1[i].y() > 1.2;
+    }
+    boolList deep0, deep1;
+    probe.geometry().deeperThan(x0, depth, deep0);
+    probe.geometry().deeperThan(x1, depth, deep1);
+    label nEntered = 0;
+    forAll(x0, i)
+    {
+        nEntered += !deep0[i] && deep1[i];
+    }
+    pointField x(x1);
+    vectorField v(v0);
+    vector F;
+    EXPECT_EQ(probe.entries(x0, x, v, 0.01, 1e-3, F), nEntered);
+    EXPECT_GT(nEntered, 1000);
+    forAll(x, i)
+    {
+        EXPECT_EQ(x[i] != x1[i], !deep0[i] && deep1[i]) << i;
+    }
+    return {probe.wall().guard().nTested(), offGrid};
+}
+
+
+//- The terrain of a probe's terrain barrier
+const topographyModel& terrainOf(const barrierProbe& probe)
+{
+    return dynamic_cast<const barrierGeometries::terrainGeometry&>
+    (
+        probe.geometry()
+    ).topography();
+}
+
+} // End anonymous namespace
+
+
 // A raster terrain, screened by the highest elevation of each column of
 // cells: particles lying 0.01 m above its gentle slope are cleared without
 // an exact test, those 0.07 m below (deeper than the guard's 0.05 m) all
-// tested; and of 20,000 random moves about the surface, by up to a cell
-// (some beyond the grid's sides, where the terrain rises past the edge
-// columns' tops: tested exactly), every one that ends deeper than the
-// guard's depth from a start that is not is stopped, as the exact test
-// finds them
+// tested; and of 20,000 random moves about the surface (randomEntries;
+// some beyond the grid's sides, where the terrain rises past the edge
+// columns' tops: tested exactly) every entry is stopped, the screen
+// clearing some of them
 TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
 {
     // Samples every 0.05 m from (-0.025 -0.025): over the probes' grid,
@@ -300,131 +396,28 @@ TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
         " offset (0 0); } contact slip;",
         dir
     );
-    const auto& terrain =
-        dynamic_cast<const barrierGeometries::terrainGeometry&>
-        (
-            probe.geometry()
-        ).topography();
-    const scalar depth = 0.5*probe.grid().hMin();
-
-    constexpr label n = 400;
-    for (const scalar dz : {0.01, -0.07})
-    {
-        pointField x0(n), x(n);
-        vectorField u(n, vector(0.5, 0, 0));
-        for (label i = 0; i < n; ++i)
-        {
-            const scalar px = 0.02 + 0.9*(i%20)/19, py = 0.02 + 1.1*(i/20)/19;
-            x0[i] = point(px, py, terrain.Z(px, py) + dz);
-            x[i] = point(px + 0.005, py, terrain.Z(px + 0.005, py) + dz);
-        }
-        vector F;
-        EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
-        EXPECT_EQ(probe.wall().guard().nTested(), dz > 0 ? 0 : n) << dz;
-    }
-
-    constexpr label nRandom = 20000;
-    std::mt19937_64 rng(23);
-    std::uniform_real_distribution<double> u(-1, 1);
-    pointField x0(nRandom), x1(nRandom);
-    vectorField v0(nRandom);
-    for (label i = 0; i < nRandom; ++i)
-    {
-        const scalar px = 0.5 + 0.48*u(rng), py = 0.6 + 0.58*u(rng);
-        x0[i] = point(px, py, terrain.Z(px, py) + 0.1*u(rng));
-        const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
-        x1[i] = x0[i] + move;
-        v0[i] = move/1e-3;
-    }
-    boolList deep0, deep1;
-    probe.geometry().deeperThan(x0, depth, deep0);
-    probe.geometry().deeperThan(x1, depth, deep1);
-    label nEntered = 0;
-    forAll(x0, i)
-    {
-        nEntered += !deep0[i] && deep1[i];
-    }
-    pointField x(x1);
-    vectorField v(v0);
-    vector F;
-    EXPECT_EQ(probe.entries(x0, x, v, 0.01, 1e-3, F), nEntered);
-    EXPECT_GT(nEntered, 1000);
-    // The screen cleared some, not all
-    EXPECT_LT(probe.wall().guard().nTested(), nRandom);
-    forAll(x, i)
-    {
-        if (!deep0[i] && deep1[i])
-        {
-            EXPECT_NE(x[i], x1[i]) << i;
-        }
-        else
-        {
-            EXPECT_EQ(x[i], x1[i]) << i;
-        }
-    }
+    const topographyModel& terrain = terrainOf(probe);
+    EXPECT_EQ(testedLyingAt(probe, terrain, 0.01), 0);
+    EXPECT_EQ(testedLyingAt(probe, terrain, -0.07), 400);
+    EXPECT_LT(randomEntries(probe, terrain, 23).tested, 20000);
 }
 
 
 // A flat terrain at z = 0.4, screened by its columns (the same height
 // everywhere): particles 0.01 m above it are cleared, 0.07 m below all
-// tested; of 20,000 random moves by up to a cell, some ending beyond the
-// grid's sides (no column: tested exactly), every entry deeper than the
-// guard's depth is stopped, as the exact test finds them
+// tested; of 20,000 random moves (randomEntries), more than 100 ending
+// beyond the grid's sides (no column: tested exactly), every entry is
+// stopped
 TEST(particleGuard, FlatTerrainScreenedByColumnsAlsoOffTheGrid)
 {
     barrierProbe probe
     (
         "type terrain; topography flat; flatCoeffs { Z0 0.4; } contact slip;"
     );
-    const scalar depth = 0.5*probe.grid().hMin();
-    constexpr label n = 400;
-    for (const scalar dz : {0.01, -0.07})
-    {
-        pointField x0(n), x(n);
-        vectorField u(n, vector(0.5, 0, 0));
-        for (label i = 0; i < n; ++i)
-        {
-            x0[i] = point(0.02 + 0.9*(i%20)/19, 0.02 + 1.1*(i/20)/19, 0.4 + dz);
-            x[i] = x0[i] + vector(0.005, 0, 0);
-        }
-        vector F;
-        EXPECT_EQ(probe.entries(x0, x, u, 0.01, 1e-3, F), 0) << dz;
-        EXPECT_EQ(probe.wall().guard().nTested(), dz > 0 ? 0 : n) << dz;
-    }
-
-    constexpr label nRandom = 20000;
-    std::mt19937_64 rng(29);
-    std::uniform_real_distribution<double> u(-1, 1);
-    pointField x0(nRandom), x1(nRandom);
-    vectorField v0(nRandom);
-    label offGrid = 0;
-    for (label i = 0; i < nRandom; ++i)
-    {
-        x0[i] = point(0.5 + 0.48*u(rng), 0.6 + 0.58*u(rng), 0.4 + 0.1*u(rng));
-        const vector move(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
-        x1[i] = x0[i] + move;
-        v0[i] = move/1e-3;
-        offGrid += x1[i].x() < 0 || x1[i].x() > 1 || x1[i].y() < 0
-            || x1[i].y() > 1.2;
-    }
-    EXPECT_GT(offGrid, 100);
-    boolList deep0, deep1;
-    probe.geometry().deeperThan(x0, depth, deep0);
-    probe.geometry().deeperThan(x1, depth, deep1);
-    label nEntered = 0;
-    forAll(x0, i)
-    {
-        nEntered += !deep0[i] && deep1[i];
-    }
-    pointField x(x1);
-    vectorField v(v0);
-    vector F;
-    EXPECT_EQ(probe.entries(x0, x, v, 0.01, 1e-3, F), nEntered);
-    EXPECT_GT(nEntered, 1000);
-    forAll(x, i)
-    {
-        EXPECT_EQ(x[i] != x1[i], !deep0[i] && deep1[i]) << i;
-    }
+    const topographyModel& terrain = terrainOf(probe);
+    EXPECT_EQ(testedLyingAt(probe, terrain, 0.01), 0);
+    EXPECT_EQ(testedLyingAt(probe, terrain, -0.07), 400);
+    EXPECT_GT(randomEntries(probe, terrain, 29).offGrid, 100);
 }
 
 
