@@ -13,7 +13,9 @@ Description
     against its closed-form derivative, the taken branch at kinks, no trap
     where the value is finite), parse errors that point at the error,
     constants folded to NaN and inf under the solvers' floating-point
-    traps, and OpenMP evaluation that agrees with serial evaluation bit for
+    traps, bounds over boxes that hold every value taken in them (every
+    function and operator, random boxes) and are tight for the slope and
+    the hemisphere, and OpenMP evaluation that agrees with serial evaluation bit for
     bit. Prints the evaluations per second of the hemisphere.
 
 \*---------------------------------------------------------------------------*/
@@ -29,6 +31,7 @@ Description
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <random>
 #include <tuple>
 
 using namespace Foam;
@@ -375,6 +378,104 @@ TEST(scalarExpression, HemisphereHasRadiusFiveAboutItsCentre)
         EXPECT_NEAR(h.value(p.data()), p[2], relTol*p[2])
             << "(" << p[0] << " " << p[1] << ")";
     }
+}
+
+
+// Every function and operator, over 400 random boxes each (half-widths
+// 1e-8 to 10 about centres in [-8, 8]^2, some of them points): every value
+// the expression takes at 300 points of the box (its corners, points one
+// ulp inside them, random ones) lies within its bounds, and is not NaN,
+// unless the bounds are [-inf, inf]; each expression is bounded over most
+// boxes, and the solvers' traps stay quiet
+TEST(scalarExpression, BoundsHoldEveryValueOverRandomBoxes)
+{
+    const std::vector<std::string> exprs =
+    {
+        "x + y", "x - 2*y", "x*y", "x/y", "x^2 - y", "(x - y)^3", "x^-2",
+        "pow(x, y)", "pow(x, 0.5)", "pow(x, 3) + pow(y, -3)", "pow(y, 4)",
+        "2^x", "abs(x)*y", "sqrt(x)", "exp(x/2)", "log(x)",
+        "log10(abs(x) + 1)", "sin(3*x) + cos(y)", "sin(x*y)", "tan(x)",
+        "asin(x/6)", "acos(y/6)", "atan(x*y)", "sinh(x)", "cosh(x - y)",
+        "tanh(x)", "floor(x) + ceil(y)", "deg2rad(x) + rad2deg(y)",
+        "sign(x)*y", "atan2(y, x)", "hypot(x, y)", "min(x, y) - max(x, -y)",
+        "max(sqrt(x), 0)", "max(0, sqrt(x))", "x <= 1 ? 2 - x/3 : y",
+        "x < y && y > 0 || !(x == 1) ? sin(x) : -y", "x != y", "-x >= y",
+        "y < 0 ? (x < 0 ? x : 2*x) : (x > 1 ? -x : x*y)",
+        "x <= 10 ? 10 - x/3 : 10 - 10/3", hemisphere,
+        "(x < 0 ? sqrt(-x) : sqrt(x)) + 1e300*y"
+    };
+    const solverFpTraps traps;
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (const std::string& expr : exprs)
+    {
+        const scalarExpression f(expr, {"x", "y"}, "test");
+        label bounded = 0;
+        for (label box = 0; box < 400; ++box)
+        {
+            scalarMinMax r[2];
+            for (scalarMinMax& ri : r)
+            {
+                const double c = -8 + 16*u(rng);
+                const double h = box%10 ? std::pow(10.0, -8 + 9*u(rng)) : 0;
+                ri = scalarMinMax(c - h, c + h);
+            }
+            const scalarMinMax b(f.bounds(r));
+            if (b.min() == -INFINITY && b.max() == INFINITY)
+            {
+                continue;
+            }
+            ++bounded;
+            fpTrapsHeld masked;
+            for (label k = 0; k < 300; ++k)
+            {
+                double xy[2];
+                for (int d = 0; d < 2; ++d)
+                {
+                    const double lo = r[d].min(), hi = r[d].max();
+                    const int corner = (k >> d) & 1;
+                    xy[d] =
+                        k < 4 ? (corner ? hi : lo)
+                      : k < 8 ? std::nextafter(corner ? hi : lo, lo + (hi - lo)/2)
+                      : lo + (hi - lo)*u(rng);
+                    xy[d] = std::min(std::max(xy[d], lo), hi);
+                }
+                const double v = f.value(xy);
+                EXPECT_TRUE(b.min() <= v && v <= b.max())
+                    << expr << " at (" << xy[0] << " " << xy[1] << ") = " << v
+                    << " outside [" << b.min() << ", " << b.max() << "]";
+            }
+        }
+        EXPECT_GT(bounded, 100) << expr;
+    }
+}
+
+
+// The bounds of the paper's piecewise slope are its values at the ends of
+// a piece; where a box straddles the kink, both pieces over the whole box
+// (the slope continued to the box's end below, its value at the box's
+// start above); the hemisphere's highest about its top, its radius
+TEST(scalarExpression, BoundsOfTheSlopeAndTheHemisphereAreTight)
+{
+    const scalarExpression Z
+    (
+        "x <= 10 ? 10 - x/3 : 10 - 10/3", {"x", "y"}, "test"
+    );
+    const scalarMinMax onSlope[2] = {{2, 3}, {0, 1}};
+    EXPECT_EQ(Z.bounds(onSlope).min(), 10 - 3.0/3);
+    EXPECT_EQ(Z.bounds(onSlope).max(), 10 - 2.0/3);
+    const scalarMinMax acrossKink[2] = {{9, 11}, {0, 1}};
+    EXPECT_EQ(Z.bounds(acrossKink).min(), 10 - 11.0/3);
+    EXPECT_EQ(Z.bounds(acrossKink).max(), 10 - 9.0/3);
+    const scalarMinMax point[2] = {{7.3, 7.3}, {2, 2}};
+    const double xy[2] = {7.3, 2};
+    EXPECT_EQ(Z.bounds(point).min(), Z.value(xy));
+    EXPECT_EQ(Z.bounds(point).max(), Z.value(xy));
+
+    const scalarExpression h(hemisphere, {"x", "y"}, "test");
+    const scalarMinMax aboutTop[2] = {{24.5, 25.5}, {24, 25}};
+    EXPECT_EQ(h.bounds(aboutTop).max(), 5);
+    EXPECT_NEAR(h.bounds(aboutTop).min(), std::sqrt(25 - 0.25 - 1), 1e-14);
 }
 
 

@@ -192,7 +192,7 @@ void Foam::particleGuard::guardInside
 }
 
 
-bool Foam::particleGuard::mayBeDeep
+inline bool Foam::particleGuard::mayBeDeep
 (
     const gridGeometry& g,
     const double x,

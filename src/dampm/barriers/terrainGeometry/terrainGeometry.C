@@ -14,6 +14,7 @@ License
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -138,6 +139,7 @@ void Foam::barrierGeometries::terrainGeometry::columnTops
         return 1e-9*(std::abs(x) + std::abs(g.origin[d]) + g.dx[d]);
     };
     top.assign(size_t(g.nCells[0])*g.nCells[1], 0.0);
+    bool bounded = false;
     for (gridGeometry::index j = 0; j < g.nCells[1]; ++j)
     {
         for (gridGeometry::index i = 0; i < g.nCells[0]; ++i)
@@ -149,13 +151,16 @@ void Foam::barrierGeometries::terrainGeometry::columnTops
                 g.nodeCoord(1, j) - edge(1, j),
                 g.nodeCoord(1, j + 1) + edge(1, j + 1)
             );
-            if (!std::isfinite(highest))
-            {
-                top.clear();
-                return;
-            }
-            top[i + g.nCells[0]*j] = highest;
+            // (Where the bound is infinite or NaN, every particle tested)
+            const bool finite = std::isfinite(highest);
+            top[i + g.nCells[0]*j] =
+                finite ? highest : std::numeric_limits<double>::infinity();
+            bounded = bounded || finite;
         }
+    }
+    if (!bounded)
+    {
+        top.clear();
     }
 }
 

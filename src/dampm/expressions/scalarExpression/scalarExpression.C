@@ -17,6 +17,8 @@ License
 #include <cmath>
 #include <cstring>
 #include <iterator>
+#include <limits>
+#include <type_traits>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * * Parser  * * * * * * * * * * * * * * * * //
@@ -177,7 +179,7 @@ private:
         if (folds)
         {
             const scalar result =
-                run<scalar>(&code_[end - nIn], nIn + 1, nullptr);
+                run<scalar>(code_.data(), end - nIn, end + 1, nullptr);
             code_.resize(end - nIn);
             code_.push_back({opConst, onStack, 0, result});
         }
@@ -512,6 +514,8 @@ struct Foam::scalarExpression::dual
         const scalar t = std::tanh(a.v);
         return {t, (1 - t*t)*a.d};
     }
+    friend dual sqr(const dual& a) { return a*a; }
+    friend dual sign(const dual& a) { return (a.v >= 0) ? 1 : -1; }
     friend dual abs(const dual& a)
     {
         return {std::abs(a.v), a.v > 0 ? a.d : a.v < 0 ? -a.d : 0};
@@ -558,13 +562,403 @@ struct Foam::scalarExpression::dual
 };
 
 
+// * * * * * * * * * * * * * * * * Intervals * * * * * * * * * * * * * * * //
+
+// [lo, hi], holding every value an operation gives, as run<scalar> rounds
+// it, for operands anywhere in the operands' intervals. Addition,
+// multiplication, division and sqrt round correctly and rounding to
+// nearest is monotone, so their results at the ends bound those between,
+// with no allowance; libm's functions are widened by a few ulps (glibc's
+// are within 2 or 3). Where no bound is found (a pole, a domain left, a
+// NaN) the interval is whole, [-inf, inf], and may hold NaN: every
+// operation on it gives whole (a NaN need not reach the result:
+// std::max(NaN, 0) is NaN, std::max(0, NaN) is 0) but the comparisons,
+// which give 0 or 1 whatever their operands.
+struct Foam::scalarExpression::interval
+{
+    scalar lo, hi;
+
+    //- Uninitialised, as a scalar
+    interval() = default;
+
+    interval(const scalar v)
+    :
+        lo(v),
+        hi(v)
+    {}
+
+    interval(const scalar l, const scalar h)
+    :
+        lo(l),
+        hi(h)
+    {}
+
+    static constexpr scalar inf = std::numeric_limits<scalar>::infinity();
+
+    static interval whole() { return {-inf, inf}; }
+
+    bool isWhole() const { return lo == -inf && hi == inf; }
+
+    //- [l, h] from operands a (and b), whole if one is or l, h are NaN
+    static interval of(const interval& a, const scalar l, const scalar h)
+    {
+        return (a.isWhole() || l != l || h != h) ? whole() : interval(l, h);
+    }
+
+    static interval of
+    (
+        const interval& b,
+        const interval& a,
+        const scalar l,
+        const scalar h
+    )
+    {
+        return b.isWhole() ? whole() : of(a, l, h);
+    }
+
+    //- [l, h] of a libm function, widened
+    static interval libm(const interval& a, scalar l, scalar h)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            l = std::nextafter(l, -inf);
+            h = std::nextafter(h, inf);
+        }
+        return of(a, l, h);
+    }
+
+    //- Smallest and largest of four values, NaN if one is
+    static interval hull4(const scalar p[4])
+    {
+        scalar l = p[0], h = p[0];
+        bool nan = (p[0] != p[0]);
+        for (int k = 1; k < 4; ++k)
+        {
+            l = std::min(l, p[k]);
+            h = std::max(h, p[k]);
+            nan = nan || (p[k] != p[k]);
+        }
+        return nan ? interval(NAN, NAN) : interval(l, h);
+    }
+
+    bool holdsZero() const { return lo <= 0 && 0 <= hi; }
+
+    //- The ternary's condition: may be zero, may be nonzero (a NaN
+    //  is not zero)
+    bool mayBeZero() const { return holdsZero(); }
+    bool mayBeNonzero() const { return !(lo == 0 && hi == 0); }
+
+    //- Both operands' values
+    friend interval hull(const interval& b, const interval& a)
+    {
+        return of(b, a, std::min(b.lo, a.lo), std::max(b.hi, a.hi));
+    }
+
+    //- A truth value: 1, 0 or either
+    static interval truth(const bool isTrue, const bool isFalse)
+    {
+        return isTrue ? interval(1) : isFalse ? interval(0) : interval(0, 1);
+    }
+
+    //- The extremes of sin (phase 0) or cos (phase pi/2) over a: at the
+    //  ends, or 1 at pi/2 - phase + 2 k pi, -1 at -pi/2 - phase + 2 k pi
+    //  inside it (found with a margin: a spare extreme only loosens)
+    static interval periodic
+    (
+        const interval& a,
+        const scalar phase,
+        scalar (*f)(scalar)
+    )
+    {
+        constexpr scalar pi = constant::mathematical::pi;
+        if (a.isWhole() || !(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6))
+        {
+            return a.isWhole() ? whole() : interval(-1, 1);
+        }
+        const scalar fLo = f(a.lo), fHi = f(a.hi);
+        const interval ends(libm(a, std::min(fLo, fHi), std::max(fLo, fHi)));
+        const auto reaches = [&](const scalar x0)
+        {
+            // x0 + 2 k pi in [lo, hi] for some k, within 1e-6
+            const scalar k = std::floor((a.lo - x0)/(2*pi));
+            for (int dk = 0; dk <= 2; ++dk)
+            {
+                const scalar x = x0 + 2*pi*(k + dk);
+                if (x >= a.lo - 1e-6 && x <= a.hi + 1e-6)
+                {
+                    return true;
+                }
+            }
+            return a.hi - a.lo >= 2*pi;
+        };
+        return
+        {
+            reaches(-pi/2 - phase) ? -1 : std::max(ends.lo, -1.0),
+            reaches(pi/2 - phase) ? 1 : std::min(ends.hi, 1.0)
+        };
+    }
+
+    //- Range of |a|
+    static interval magnitude(const interval& a)
+    {
+        const scalar l = std::abs(a.lo), h = std::abs(a.hi);
+        return {a.holdsZero() ? 0 : std::min(l, h), std::max(l, h)};
+    }
+
+    // Arithmetic
+    friend interval operator-(const interval& a) { return of(a, -a.hi, -a.lo); }
+    friend interval operator+(const interval& b, const interval& a)
+    {
+        return of(b, a, b.lo + a.lo, b.hi + a.hi);
+    }
+    friend interval operator-(const interval& b, const interval& a)
+    {
+        return of(b, a, b.lo - a.hi, b.hi - a.lo);
+    }
+    friend interval operator*(const interval& b, const interval& a)
+    {
+        const scalar p[4] = {b.lo*a.lo, b.lo*a.hi, b.hi*a.lo, b.hi*a.hi};
+        const interval r(hull4(p));
+        return of(b, a, r.lo, r.hi);
+    }
+    friend interval operator/(const interval& b, const interval& a)
+    {
+        if (a.holdsZero())
+        {
+            return whole();
+        }
+        const scalar q[4] = {b.lo/a.lo, b.lo/a.hi, b.hi/a.lo, b.hi/a.hi};
+        const interval r(hull4(q));
+        return of(b, a, r.lo, r.hi);
+    }
+    friend interval sqr(const interval& a)
+    {
+        const interval m(magnitude(a));
+        return of(a, m.lo*m.lo, m.hi*m.hi);
+    }
+
+    // Comparisons: 1, 0 or either
+    friend interval operator<(const interval& b, const interval& a)
+    {
+        const bool known = !b.isWhole() && !a.isWhole();
+        return truth(known && b.hi < a.lo, known && b.lo >= a.hi);
+    }
+    friend interval operator<=(const interval& b, const interval& a)
+    {
+        const bool known = !b.isWhole() && !a.isWhole();
+        return truth(known && b.hi <= a.lo, known && b.lo > a.hi);
+    }
+    friend interval operator>(const interval& b, const interval& a)
+    {
+        return a < b;
+    }
+    friend interval operator>=(const interval& b, const interval& a)
+    {
+        return a <= b;
+    }
+    friend interval operator==(const interval& b, const interval& a)
+    {
+        const bool known = !b.isWhole() && !a.isWhole();
+        return truth
+        (
+            known && b.lo == b.hi && a.lo == a.hi && b.lo == a.lo,
+            known && (b.hi < a.lo || a.hi < b.lo)
+        );
+    }
+    friend interval operator!=(const interval& b, const interval& a)
+    {
+        const interval eq(b == a);
+        return {1 - eq.hi, 1 - eq.lo};
+    }
+    friend interval operator&&(const interval& b, const interval& a)
+    {
+        return {std::min(b.lo, a.lo), std::min(b.hi, a.hi)};
+    }
+    friend interval operator||(const interval& b, const interval& a)
+    {
+        return {std::max(b.lo, a.lo), std::max(b.hi, a.hi)};
+    }
+
+    // Functions of one argument
+    friend interval sqrt(const interval& a)
+    {
+        return a.lo < 0 ? whole() : of(a, std::sqrt(a.lo), std::sqrt(a.hi));
+    }
+    friend interval exp(const interval& a)
+    {
+        const interval r(libm(a, std::exp(a.lo), std::exp(a.hi)));
+        return of(a, std::max(r.lo, 0.0), r.hi);
+    }
+    friend interval log(const interval& a)
+    {
+        return a.lo > 0 ? libm(a, std::log(a.lo), std::log(a.hi)) : whole();
+    }
+    friend interval log10(const interval& a)
+    {
+        return
+            a.lo > 0 ? libm(a, std::log10(a.lo), std::log10(a.hi)) : whole();
+    }
+    friend interval sin(const interval& a)
+    {
+        return periodic(a, 0, [](const scalar x) { return std::sin(x); });
+    }
+    friend interval cos(const interval& a)
+    {
+        return periodic
+        (
+            a, constant::mathematical::pi/2,
+            [](const scalar x) { return std::cos(x); }
+        );
+    }
+    friend interval tan(const interval& a)
+    {
+        // Increasing between its poles, pi/2 + k pi
+        constexpr scalar pi = constant::mathematical::pi;
+        if (!(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6))
+        {
+            return whole();
+        }
+        const scalar k = std::floor((a.lo - pi/2)/pi);
+        for (int dk = 0; dk <= 2; ++dk)
+        {
+            const scalar x = pi/2 + pi*(k + dk);
+            if (x >= a.lo - 1e-6 && x <= a.hi + 1e-6)
+            {
+                return whole();
+            }
+        }
+        return libm(a, std::tan(a.lo), std::tan(a.hi));
+    }
+    friend interval asin(const interval& a)
+    {
+        return (a.lo >= -1 && a.hi <= 1)
+            ? libm(a, std::asin(a.lo), std::asin(a.hi)) : whole();
+    }
+    friend interval acos(const interval& a)
+    {
+        return (a.lo >= -1 && a.hi <= 1)
+            ? libm(a, std::acos(a.hi), std::acos(a.lo)) : whole();
+    }
+    friend interval atan(const interval& a)
+    {
+        return libm(a, std::atan(a.lo), std::atan(a.hi));
+    }
+    friend interval sinh(const interval& a)
+    {
+        return libm(a, std::sinh(a.lo), std::sinh(a.hi));
+    }
+    friend interval cosh(const interval& a)
+    {
+        const interval m(magnitude(a));
+        const interval r(libm(a, std::cosh(m.lo), std::cosh(m.hi)));
+        return of(a, std::max(r.lo, std::nextafter(1.0, 0.0)), r.hi);
+    }
+    friend interval tanh(const interval& a)
+    {
+        const interval r(libm(a, std::tanh(a.lo), std::tanh(a.hi)));
+        return of(a, std::max(r.lo, -1.0), std::min(r.hi, 1.0));
+    }
+    friend interval abs(const interval& a)
+    {
+        const interval m(magnitude(a));
+        return of(a, m.lo, m.hi);
+    }
+    friend interval floor(const interval& a)
+    {
+        return of(a, std::floor(a.lo), std::floor(a.hi));
+    }
+    friend interval ceil(const interval& a)
+    {
+        return of(a, std::ceil(a.lo), std::ceil(a.hi));
+    }
+    friend interval degToRad(const interval& a)
+    {
+        return of(a, degToRad(a.lo), degToRad(a.hi));
+    }
+    friend interval radToDeg(const interval& a)
+    {
+        return of(a, radToDeg(a.lo), radToDeg(a.hi));
+    }
+    friend interval sign(const interval& a)
+    {
+        return of(a, Foam::sign(a.lo), Foam::sign(a.hi));
+    }
+
+    // Functions of two arguments (b, a)
+    friend interval pow(const interval& b, const interval& a)
+    {
+        if (b.isWhole() || a.isWhole())
+        {
+            return whole();
+        }
+        if (b.lo > 0 || (b.lo >= 0 && a.lo > 0))
+        {
+            // Monotone in b and in a: extremes at the corners
+            const scalar p[4] =
+            {
+                std::pow(b.lo, a.lo), std::pow(b.lo, a.hi),
+                std::pow(b.hi, a.lo), std::pow(b.hi, a.hi)
+            };
+            const interval r(hull4(p));
+            return libm(a, r.lo, r.hi);
+        }
+        // A negative base: a whole power n only, monotone in b on either
+        // side of 0, through 0 for n > 0
+        const scalar n = a.lo;
+        if (a.hi != n || std::floor(n) != n || std::abs(n) > 1e15)
+        {
+            return whole();
+        }
+        if (n == 0)
+        {
+            return interval(1);
+        }
+        if (n < 0 && b.holdsZero())
+        {
+            return whole();
+        }
+        const scalar ends[2] = {std::pow(b.lo, n), std::pow(b.hi, n)};
+        const bool even = (std::fmod(n, 2) == 0);
+        if (even && n > 0 && b.holdsZero())
+        {
+            return libm(a, 0, std::max(ends[0], ends[1]));
+        }
+        return
+            libm(a, std::min(ends[0], ends[1]), std::max(ends[0], ends[1]));
+    }
+    friend interval atan2(const interval& b, const interval& a)
+    {
+        constexpr scalar pi = constant::mathematical::pi;
+        return libm(hull(b, a), -pi, pi);
+    }
+    friend interval hypot(const interval& b, const interval& a)
+    {
+        const interval mb(magnitude(b)), ma(magnitude(a));
+        const interval r
+        (
+            libm(hull(b, a), std::hypot(mb.lo, ma.lo), std::hypot(mb.hi, ma.hi))
+        );
+        return of(r, std::max(r.lo, 0.0), r.hi);
+    }
+    friend interval min(const interval& b, const interval& a)
+    {
+        return of(b, a, std::min(b.lo, a.lo), std::min(b.hi, a.hi));
+    }
+    friend interval max(const interval& b, const interval& a)
+    {
+        return of(b, a, std::max(b.lo, a.lo), std::max(b.hi, a.hi));
+    }
+};
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 template<class Type>
 Type Foam::scalarExpression::run
 (
     const instruction* code,
-    const label n,
+    const label first,
+    const label last,
     const Type* vars
 )
 {
@@ -573,12 +967,13 @@ Type Foam::scalarExpression::run
     using std::sin; using std::cos; using std::tan; using std::asin;
     using std::acos; using std::atan; using std::sinh; using std::cosh;
     using std::tanh; using std::abs; using std::floor; using std::ceil;
-    using std::pow; using std::atan2; using std::hypot;
+    using std::pow; using std::atan2; using std::hypot; using std::min;
+    using std::max;
 
     Type s[maxStack];
     label top = -1;
 
-    for (label pc = 0; pc < n; ++pc)
+    for (label pc = first; pc < last; ++pc)
     {
         const instruction& c = code[pc];
 
@@ -596,11 +991,38 @@ Type Foam::scalarExpression::run
         {
             case opConst: s[++top] = c.value; break;
             case opVar: s[++top] = vars[c.arg]; break;
-            case opJumpIfZero: pc = (s[top--] == 0) ? c.arg - 1 : pc; break;
+            case opJumpIfZero:
+            {
+                const Type cond = s[top--];
+                if constexpr (std::is_same<Type, interval>::value)
+                {
+                    if (cond.mayBeZero() && cond.mayBeNonzero())
+                    {
+                        // Either branch: both, from empty stacks (the
+                        // 'then' code ends in the jump over the 'else')
+                        const label end = code[c.arg - 1].arg;
+                        s[++top] = hull
+                        (
+                            run(code, pc + 1, c.arg - 1, vars),
+                            run(code, c.arg, end, vars)
+                        );
+                        pc = end - 1;
+                    }
+                    else
+                    {
+                        pc = cond.mayBeZero() ? c.arg - 1 : pc;
+                    }
+                }
+                else
+                {
+                    pc = (cond == 0) ? c.arg - 1 : pc;
+                }
+                break;
+            }
             case opJump: pc = c.arg - 1; break;
             case opNeg: s[top] = -a; break;
             case opNot: s[top] = Type(a == 0); break;
-            case opSqr: s[top] = a*a; break;
+            case opSqr: s[top] = sqr(a); break;
             case opSqrt: s[top] = sqrt(a); break;
             case opExp: s[top] = exp(a); break;
             case opLog: s[top] = log(a); break;
@@ -619,7 +1041,7 @@ Type Foam::scalarExpression::run
             case opCeil: s[top] = ceil(a); break;
             case opDeg2rad: s[top] = degToRad(a); break;
             case opRad2deg: s[top] = radToDeg(a); break;
-            case opSign: s[top] = Type((a >= 0) ? 1 : -1); break;
+            case opSign: s[top] = sign(a); break;
             case opAdd: s[top] = b + a; break;
             case opSub: s[top] = b - a; break;
             case opMul: s[top] = b*a; break;
@@ -634,8 +1056,8 @@ Type Foam::scalarExpression::run
             case opAnd: s[top] = Type(b != 0 && a != 0); break;
             case opOr: s[top] = Type(b != 0 || a != 0); break;
             case opAtan2: s[top] = atan2(b, a); break;
-            case opMin: s[top] = std::min(b, a); break;
-            case opMax: s[top] = std::max(b, a); break;
+            case opMin: s[top] = min(b, a); break;
+            case opMax: s[top] = max(b, a); break;
             case opHypot: s[top] = hypot(b, a); break;
         }
     }
@@ -648,6 +1070,7 @@ Type Foam::scalarExpression::run
 template Foam::scalar Foam::scalarExpression::run<Foam::scalar>
 (
     const instruction*,
+    label,
     label,
     const scalar*
 );
@@ -761,9 +1184,26 @@ Foam::scalar Foam::scalarExpression::value
     {
         x[i] = dual(vars[i], i == var);
     }
-    const dual result = run(code_.data(), code_.size(), x);
+    const dual result = run(code_.data(), 0, code_.size(), x);
     derivative = result.d;
     return result.v;
+}
+
+
+Foam::scalarMinMax Foam::scalarExpression::bounds
+(
+    const scalarMinMax* ranges
+) const
+{
+    // (Ends at an infinity or a pole: no trap)
+    fpTrapsHeld masked;
+    interval x[maxVariables];
+    for (label i = 0; i < variables_.size(); ++i)
+    {
+        x[i] = interval::of(0, ranges[i].min(), ranges[i].max());
+    }
+    const interval result = run(code_.data(), 0, code_.size(), x);
+    return scalarMinMax(result.lo, result.hi);
 }
 
 

@@ -71,6 +71,19 @@ Foam::vector2D Foam::topographyModels::expressionTopography::gradient
 }
 
 
+Foam::scalar Foam::topographyModels::expressionTopography::highestOver
+(
+    const scalar x0,
+    const scalar x1,
+    const scalar y0,
+    const scalar y1
+) const
+{
+    const scalarMinMax xy[2] = {{x0, x1}, {y0, y1}};
+    return Z_.bounds(xy).max();
+}
+
+
 void Foam::topographyModels::expressionTopography::describe(Ostream& os) const
 {
     os  << "expression (Z = ";
