@@ -29,7 +29,9 @@ Description
       cells (a raster, a flat and an expression terrain, the last by its
       interval bounds; a column without a bound tested exactly): particles
       lying just above are not tested, and of 20,000 random moves every
-      entry the exact test finds is stopped, the others left alone;
+      entry the exact test finds is stopped, the others left alone; on
+      the four parts of a decomposed grid, the same stops bit for bit and
+      the same screen;
     - triSurface (the box of surfaceCase.H): a particle entering through
       the top face is put back on it and loses its velocity into it (slip;
       Coulomb with mu = 0.1 halves its 0.2 m/s along the face against
@@ -455,6 +457,167 @@ TEST(particleGuard, ExpressionTerrainScreenedByItsBounds)
     EXPECT_GT(tested, 0);
     EXPECT_LT(tested, 100);
     EXPECT_LT(randomEntries(rooted, terrainOf(rooted), 37).tested, 20000);
+}
+
+
+// A terrain's guard on the four parts of a decomposed grid (2 x 2 x 1
+// processors, gridGeometry's offset as mpmGrid sets it): each part's
+// particles (those that start in its cells) of 20,000 random moves end
+// where the whole grid puts them, bit for bit, and those whose move stays
+// in their part's columns are tested exactly as often as on the whole
+// grid (the same column screen; a move leaving the part's columns is
+// tested exactly), for a raster, a flat and an expression terrain
+TEST(particleGuard, TerrainScreenOnAProcessorsPartIsTheWholeGrids)
+{
+    const fileName dir(scratchDir("particleGuardParts"));
+    mkDir(dir);
+    {
+        std::ofstream os(dir/"wavy.asc");
+        os.precision(17);
+        os  << "ncols 22\nnrows 26\nxllcorner -0.05\nyllcorner -0.05\n"
+            << "cellsize 0.05\n";
+        for (int j = 25; j >= 0; --j)
+        {
+            for (int i = 0; i < 22; ++i)
+            {
+                const double x = -0.025 + 0.05*i, y = -0.025 + 0.05*j;
+                os  << (i ? " " : "")
+                    << 0.5 + 0.1*x - 0.05*y + 0.02*std::sin(11*x + 3*y);
+            }
+            os  << "\n";
+        }
+    }
+    const gridGeometry whole(probeGrid());
+    const auto partOf = [&](const int i0, const int ni, const int j0, const int nj)
+    {
+        gridGeometry p(whole);
+        p.decomposed = true;
+        const int lo[2] = {i0, j0}, n[2] = {ni, nj};
+        for (int d = 0; d < 2; ++d)
+        {
+            p.offset[d] = lo[d];
+            p.nCellsDomain[d] = whole.nCells[d];
+            p.nCells[d] = n[d];
+        }
+        p.finalise();
+        return p;
+    };
+    const gridGeometry parts[4] =
+    {
+        partOf(0, 4, 0, 5), partOf(4, 6, 0, 5), partOf(0, 4, 5, 3),
+        partOf(4, 6, 5, 3)
+    };
+    // The part whose cells hold a point's column, -1 off the grid
+    const auto owner = [&](const point& x)
+    {
+        const double xi = whole.local(0, x.x()), eta = whole.local(1, x.y());
+        for (int k = 0; k < 4; ++k)
+        {
+            const gridGeometry& g = parts[k];
+            if
+            (
+                xi >= g.offset[0] && xi < g.offset[0] + g.nCells[0]
+             && eta >= g.offset[1] && eta < g.offset[1] + g.nCells[1]
+            )
+            {
+                return k;
+            }
+        }
+        return -1;
+    };
+
+    for
+    (
+        const std::string& text
+      : {
+            std::string
+            (
+                "type terrain; topography raster; rasterCoeffs { file wavy.asc;"
+                " offset (0 0); } contact slip;"
+            ),
+            std::string
+            (
+                "type terrain; topography flat; flatCoeffs { Z0 0.4; }"
+                " contact slip;"
+            ),
+            terrain("x <= 0.5 ? 0.3 + 0.2*x - 0.1*y : 0.35 + 0.1*x - 0.1*y")
+        }
+    )
+    {
+        barrierProbe all(text, dir, noWalls, whole);
+        const topographyModel& Z = terrainOf(all);
+        constexpr label n = 20000;
+        std::mt19937_64 rng(43);
+        std::uniform_real_distribution<double> u(-1, 1);
+        pointField x0(n), x1(n);
+        vectorField v0(n);
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar px = 0.5 + 0.48*u(rng), py = 0.6 + 0.58*u(rng);
+            x0[i] = point(px, py, Z.Z(px, py) + 0.1*u(rng));
+            x1[i] = x0[i] + vector(0.1*u(rng), 0.15*u(rng), 0.2*u(rng));
+            v0[i] = (x1[i] - x0[i])/1e-3;
+        }
+        pointField x(x1);
+        vectorField v(v0);
+        vector F;
+        const label nEntered = all.entries(x0, x, v, 0.01, 1e-3, F);
+        EXPECT_GT(nEntered, 1000) << text;
+
+        // Whole and parts, every move and the moves that stay
+        labelList staying;
+        forAll(x0, i)
+        {
+            if (owner(x1[i]) == owner(x0[i]))
+            {
+                staying.append(i);
+            }
+        }
+        EXPECT_GT(staying.size(), n/2) << text;
+        {
+            pointField sx(x1, staying);
+            vectorField sv(v0, staying);
+            all.entries(pointField(x0, staying), sx, sv, 0.01, 1e-3, F);
+        }
+        const label stayingTested = all.wall().guard().nTested();
+
+        label partsEntered = 0, partsTested = 0, nChecked = 0;
+        for (int k = 0; k < 4; ++k)
+        {
+            barrierProbe part(text, dir, noWalls, parts[k]);
+            labelList mine, mineStaying;
+            forAll(x0, i)
+            {
+                if (owner(x0[i]) == k)
+                {
+                    mine.append(i);
+                    if (owner(x1[i]) == k)
+                    {
+                        mineStaying.append(i);
+                    }
+                }
+            }
+            pointField px(x1, mine);
+            vectorField pv(v0, mine);
+            partsEntered +=
+                part.entries(pointField(x0, mine), px, pv, 0.01, 1e-3, F);
+            forAll(mine, m)
+            {
+                EXPECT_TRUE(px[m] == x[mine[m]] && pv[m] == v[mine[m]])
+                    << text << " " << mine[m];
+            }
+            nChecked += mine.size();
+
+            pointField sx(x1, mineStaying);
+            vectorField sv(v0, mineStaying);
+            part.entries(pointField(x0, mineStaying), sx, sv, 0.01, 1e-3, F);
+            partsTested += part.wall().guard().nTested();
+        }
+        EXPECT_EQ(nChecked, n) << text;
+        EXPECT_EQ(partsEntered, nEntered) << text;
+        EXPECT_EQ(partsTested, stayingTested) << text;
+        EXPECT_LT(stayingTested, staying.size()) << text;
+    }
 }
 
 
