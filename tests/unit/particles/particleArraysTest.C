@@ -8,8 +8,10 @@ License
 
 Description
     particleArrays: fields, append, stable removal, the counting sort by
-    cell that keeps every field of a particle together, and the node rows'
-    spans the particles' stencils touch.
+    cell that keeps every field of a particle together, the binning kept
+    while every particle stays near its bin (along each axis of 3D grids
+    whose cell counts are no power of two), and the node rows' spans the
+    particles' stencils touch.
 
 \*---------------------------------------------------------------------------*/
 
@@ -19,6 +21,7 @@ Description
 #include "stencil.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
+#include <array>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -298,6 +301,118 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
     {
         EXPECT_LE(p.cell()[i - 1], p.cell()[i]);
     }
+}
+
+
+namespace
+{
+
+// On a 3D grid of n cells, in tiles of 3: the binning is kept while every
+// particle stays within 2 cells of its bin per axis, and a single particle
+// 3 cells from it along x, y or z alone, or 2 cells back along each axis
+// from its bin's corner, is found (from cell mid, 3 cells from the grid's
+// sides)
+void expectStaleBinsFound
+(
+    const std::array<gridGeometry::index, 3>& nCells,
+    const std::array<gridGeometry::index, 3>& mid
+)
+{
+    const gridGeometry g =
+        uniformGrid(3, {-1, 2, 0.5}, {0.3, 0.2, 0.4}, nCells);
+    const label maxStale = 2;
+    const tileCellOrder order(g, 3);
+    particleArrays p;
+    const label n = 3000;
+    p.append(n);
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (label i = 0; i < n; ++i)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            p.component(particleArrays::X + d)[i] =
+                g.origin[d] + u(gen)*(g.upper(d) - g.origin[d]);
+        }
+    }
+    EXPECT_TRUE(p.sortByCell(g, order, maxStale));
+
+    // The cell's lower corner of particle i's bin, and a move of it
+    const auto binCorner = [&](const label i, const int d)
+    {
+        const label c = p.cell()[i];
+        const label ijk[3] =
+        {
+            c % g.nCells[0], (c/g.nCells[0]) % g.nCells[1],
+            c/(g.nCells[0]*g.nCells[1])
+        };
+        return g.origin[d] + ijk[d]*g.dx[d];
+    };
+    const auto moveTo = [&](const label i, const double (&cells)[3])
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            p.component(particleArrays::X + d)[i] =
+                binCorner(i, d) + cells[d]*g.dx[d];
+        }
+    };
+
+    // Every particle at most two cells from its bin (but within the grid)
+    for (label i = 0; i < n; ++i)
+    {
+        double cells[3];
+        for (int d = 0; d < 3; ++d)
+        {
+            const double x0 = (binCorner(i, d) - g.origin[d])/g.dx[d];
+            const double lo = std::max(-2.0, -x0);
+            const double hi = std::min(2.99, g.nCells[d] - x0 - 0.01);
+            cells[d] = lo + (hi - lo)*u(gen);
+        }
+        moveTo(i, cells);
+    }
+    EXPECT_FALSE(p.sortByCell(g, order, maxStale));
+
+    // One particle too far along one axis (from cell mid, where an exact
+    // sort bins it), or two cells and a bit back along all three:
+    // re-binned; then kept
+    const label midCell = g.cellIndex(mid[0], mid[1], mid[2]);
+    for (const std::array<double, 3>& far :
+        {
+            std::array<double, 3>{3.5, 0.5, 0.5},
+            std::array<double, 3>{0.5, 3.5, 0.5},
+            std::array<double, 3>{0.5, 0.5, 3.5},
+            std::array<double, 3>{0.5, -2.5, 0.5},
+            std::array<double, 3>{-2.01, -2.01, -2.01}
+        }
+    )
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            p.component(particleArrays::X + d)[0] =
+                g.origin[d] + (mid[d] + 0.5)*g.dx[d];
+        }
+        p.sortByCell(g, order);
+        label i = 0;
+        while (p.cell()[i] != midCell)
+        {
+            ++i;
+        }
+        moveTo(i, {far[0], far[1], far[2]});
+        EXPECT_TRUE(p.sortByCell(g, order, maxStale))
+            << far[0] << " " << far[1] << " " << far[2];
+        EXPECT_FALSE(p.sortByCell(g, order, maxStale));
+    }
+}
+
+} // End anonymous namespace
+
+
+// 13 x 7 x 7 cells (no power of two); 3 x 49 x 7, where 49 (1/49) rounds
+// below 1 (the bin's layer from its row needs the half added)
+TEST(particleArrays, BinningIsKeptWhileNearAlongEveryAxis)
+{
+    expectStaleBinsFound({13, 7, 7}, {6, 3, 3});
+    expectStaleBinsFound({7, 49, 7}, {3, 3, 3});
 }
 
 
