@@ -353,6 +353,28 @@ randomEntriesResult randomEntries
 }
 
 
+//- dir/name: a raster of Z(x, y) sampled every 0.05 m from (-0.025
+//  -0.025), 22 x 26 samples over the probes' grid (local coordinates the
+//  map's)
+template<class Function>
+void writeRaster(const fileName& dir, const word& name, const Function& Z)
+{
+    mkDir(dir);
+    std::ofstream os(dir/name);
+    os.precision(17);
+    os  << "ncols 22\nnrows 26\nxllcorner -0.05\nyllcorner -0.05\n"
+        << "cellsize 0.05\n";
+    for (int j = 25; j >= 0; --j)
+    {
+        for (int i = 0; i < 22; ++i)
+        {
+            os  << (i ? " " : "") << Z(-0.025 + 0.05*i, -0.025 + 0.05*j);
+        }
+        os  << "\n";
+    }
+}
+
+
 //- The terrain of a probe's terrain barrier
 const topographyModel& terrainOf(const barrierProbe& probe)
 {
@@ -374,29 +396,12 @@ const topographyModel& terrainOf(const barrierProbe& probe)
 // clearing some of them
 TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
 {
-    // Samples every 0.05 m from (-0.025 -0.025): over the probes' grid,
-    // local coordinates the map's
     const auto Zexact = [](const double x, const double y)
     {
         return 0.5 + 0.1*x - 0.05*y + 0.01*std::sin(7*x)*std::cos(5*y);
     };
     const fileName dir(scratchDir("particleGuardRaster"));
-    mkDir(dir);
-    {
-        std::ofstream os(dir/"gentle.asc");
-        os.precision(17);
-        os  << "ncols 22\nnrows 26\nxllcorner -0.05\nyllcorner -0.05\n"
-            << "cellsize 0.05\n";
-        for (int j = 25; j >= 0; --j)
-        {
-            for (int i = 0; i < 22; ++i)
-            {
-                os  << (i ? " " : "")
-                    << Zexact(-0.025 + 0.05*i, -0.025 + 0.05*j);
-            }
-            os  << "\n";
-        }
-    }
+    writeRaster(dir, "gentle.asc", Zexact);
     barrierProbe probe
     (
         "type terrain; topography raster; rasterCoeffs { file gentle.asc;"
@@ -470,42 +475,19 @@ TEST(particleGuard, ExpressionTerrainScreenedByItsBounds)
 TEST(particleGuard, TerrainScreenOnAProcessorsPartIsTheWholeGrids)
 {
     const fileName dir(scratchDir("particleGuardParts"));
-    mkDir(dir);
-    {
-        std::ofstream os(dir/"wavy.asc");
-        os.precision(17);
-        os  << "ncols 22\nnrows 26\nxllcorner -0.05\nyllcorner -0.05\n"
-            << "cellsize 0.05\n";
-        for (int j = 25; j >= 0; --j)
+    writeRaster
+    (
+        dir, "wavy.asc",
+        [](const double x, const double y)
         {
-            for (int i = 0; i < 22; ++i)
-            {
-                const double x = -0.025 + 0.05*i, y = -0.025 + 0.05*j;
-                os  << (i ? " " : "")
-                    << 0.5 + 0.1*x - 0.05*y + 0.02*std::sin(11*x + 3*y);
-            }
-            os  << "\n";
+            return 0.5 + 0.1*x - 0.05*y + 0.02*std::sin(11*x + 3*y);
         }
-    }
+    );
     const gridGeometry whole(probeGrid());
-    const auto partOf = [&](const int i0, const int ni, const int j0, const int nj)
-    {
-        gridGeometry p(whole);
-        p.decomposed = true;
-        const int lo[2] = {i0, j0}, n[2] = {ni, nj};
-        for (int d = 0; d < 2; ++d)
-        {
-            p.offset[d] = lo[d];
-            p.nCellsDomain[d] = whole.nCells[d];
-            p.nCells[d] = n[d];
-        }
-        p.finalise();
-        return p;
-    };
     const gridGeometry parts[4] =
     {
-        partOf(0, 4, 0, 5), partOf(4, 6, 0, 5), partOf(0, 4, 5, 3),
-        partOf(4, 6, 5, 3)
+        partOf(whole, {0, 0}, {4, 5}), partOf(whole, {4, 0}, {6, 5}),
+        partOf(whole, {0, 5}, {4, 3}), partOf(whole, {4, 5}, {6, 3})
     };
     // The part whose cells hold a point's column, -1 off the grid
     const auto owner = [&](const point& x)

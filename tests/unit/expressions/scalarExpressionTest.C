@@ -14,9 +14,10 @@ Description
     where the value is finite), parse errors that point at the error,
     constants folded to NaN and inf under the solvers' floating-point
     traps, bounds over boxes that hold every value taken in them (every
-    function and operator, random boxes) and are tight for the slope and
-    the hemisphere, and OpenMP evaluation that agrees with serial evaluation bit for
-    bit. Prints the evaluations per second of the hemisphere.
+    function and operator, random boxes, and where a value may be NaN)
+    and are tight for the slope and the hemisphere, and OpenMP evaluation
+    that agrees with serial evaluation bit for bit. Prints the evaluations
+    per second of the hemisphere.
 
 \*---------------------------------------------------------------------------*/
 
@@ -436,7 +437,8 @@ TEST(scalarExpression, BoundsHoldEveryValueOverRandomBoxes)
                     const int corner = (k >> d) & 1;
                     xy[d] =
                         k < 4 ? (corner ? hi : lo)
-                      : k < 8 ? std::nextafter(corner ? hi : lo, lo + (hi - lo)/2)
+                      : k < 8
+                      ? std::nextafter(corner ? hi : lo, lo + (hi - lo)/2)
                       : lo + (hi - lo)*u(rng);
                     xy[d] = std::min(std::max(xy[d], lo), hi);
                 }
@@ -447,6 +449,51 @@ TEST(scalarExpression, BoundsHoldEveryValueOverRandomBoxes)
             }
         }
         EXPECT_GT(bounded, 100) << expr;
+    }
+}
+
+
+// Where a value may be NaN, and a later operation takes it for a number
+// (a comparison, min, max, the ternary's other branch), the bounds still
+// hold every value: sin and cos of an exp that overflows in the box, NaN
+// constants (0/0, acos(2)) and an expression that is one. At the boxes'
+// corners and 200 points along their diagonal every value is within the
+// bounds, and a NaN value only within [-inf, inf]
+TEST(scalarExpression, BoundsHoldWhereAValueMayBeNaN)
+{
+    const solverFpTraps traps;
+    const std::vector<std::tuple<std::string, scalarMinMax, scalarMinMax>>
+        cases =
+    {
+        {"sin(exp(x)) < 2 ? 0 : 100", {700, 710}, {0, 1}},
+        {"cos(exp(x)) > 2 ? 100 : 0", {700, 710}, {0, 1}},
+        {"x > 0 ? 1 : 0/0", {-1, 1}, {0, 1}},
+        {"min(x, (y >= 1e-300) ? !x : acos(2))", {-1, 1}, {0, 1}},
+        {"exp(0/0 + x)", {-1, 1}, {0, 1}},
+        {"0/0", {-1, 1}, {0, 1}}
+    };
+    for (const auto& c : cases)
+    {
+        const scalarExpression f(std::get<0>(c), {"x", "y"}, "test");
+        const scalarMinMax r[2] = {std::get<1>(c), std::get<2>(c)};
+        const scalarMinMax b(f.bounds(r));
+        const bool whole = b.min() == -INFINITY && b.max() == INFINITY;
+        fpTrapsHeld masked;
+        for (label k = 0; k <= 203; ++k)
+        {
+            const double t = k < 4 ? (k & 1) : (k - 4)/199.0;
+            const double ty = k < 4 ? (k >> 1) : t;
+            const double xy[2] =
+            {
+                r[0].min() + t*(r[0].max() - r[0].min()),
+                r[1].min() + ty*(r[1].max() - r[1].min())
+            };
+            const double v = f.value(xy);
+            EXPECT_TRUE(v == v ? b.min() <= v && v <= b.max() : whole)
+                << std::get<0>(c) << " at (" << xy[0] << " " << xy[1]
+                << ") = " << v << " outside [" << b.min() << ", "
+                << b.max() << "]";
+        }
     }
 }
 

@@ -29,26 +29,6 @@ using namespace Foam;
 namespace
 {
 
-//- The part of domain g of n[d] cells from domain cell lo[d]
-gridGeometry partOf
-(
-    const gridGeometry& g,
-    const std::array<int, 2>& lo,
-    const std::array<int, 2>& n
-)
-{
-    gridGeometry p(g);
-    p.decomposed = true;
-    for (int d = 0; d < 2; ++d)
-    {
-        p.offset[d] = lo[d];
-        p.nCellsDomain[d] = g.nCells[d];
-        p.nCells[d] = n[d];
-    }
-    p.finalise();
-    return p;
-}
-
 
 //- Domain (i, j) of a node of part p
 std::array<int, 2> domainNode(const gridGeometry& p, const int nodei)

@@ -407,11 +407,13 @@ void expectStaleBinsFound
 } // End anonymous namespace
 
 
-// 13 x 7 x 7 cells (no power of two); 3 x 49 x 7, where 49 (1/49) rounds
-// below 1 (the bin's layer from its row needs the half added)
+// 13 x 7 x 7 cells (no power of two); 49 x 7 x 7 and 7 x 49 x 7, where
+// 49 (1/49) rounds below 1 (the bin's row from its flat index, and its
+// layer from its row, need the half added)
 TEST(particleArrays, BinningIsKeptWhileNearAlongEveryAxis)
 {
     expectStaleBinsFound({13, 7, 7}, {6, 3, 3});
+    expectStaleBinsFound({49, 7, 7}, {3, 3, 3});
     expectStaleBinsFound({7, 49, 7}, {3, 3, 3});
 }
 

@@ -568,12 +568,15 @@ struct Foam::scalarExpression::dual
 // it, for operands anywhere in the operands' intervals. Addition,
 // multiplication, division and sqrt round correctly and rounding to
 // nearest is monotone, so their results at the ends bound those between,
-// with no allowance; libm's functions are widened by a few ulps (glibc's
-// are within 2 or 3). Where no bound is found (a pole, a domain left, a
-// NaN) the interval is whole, [-inf, inf], and may hold NaN: every
-// operation on it gives whole (a NaN need not reach the result:
-// std::max(NaN, 0) is NaN, std::max(0, NaN) is 0) but the comparisons,
-// which give 0 or 1 whatever their operands.
+// with no allowance; libm's functions are widened by 8 ulps (glibc's
+// are within 2 of the exact value, so the values between the ends within
+// 4 of the ends' results). Where no bound is found (a pole, a domain left, a
+// NaN, a NaN constant, an infinite argument of sin or cos) the interval is
+// whole, [-inf, inf], and may hold NaN: every operation on it gives whole
+// (a NaN need not reach the result: std::max(NaN, 0) is NaN,
+// std::max(0, NaN) is 0, and a comparison with NaN is a number) but the
+// comparisons, which give 0 or 1 whatever their operands. Every rule
+// relies on this: an interval that is not whole holds no NaN.
 struct Foam::scalarExpression::interval
 {
     scalar lo, hi;
@@ -581,10 +584,11 @@ struct Foam::scalarExpression::interval
     //- Uninitialised, as a scalar
     interval() = default;
 
+    //- The value v (whole for a NaN: a folded 0/0 or sqrt(-1))
     interval(const scalar v)
     :
-        lo(v),
-        hi(v)
+        lo(v == v ? v : -inf),
+        hi(v == v ? v : inf)
     {}
 
     interval(const scalar l, const scalar h)
@@ -597,7 +601,10 @@ struct Foam::scalarExpression::interval
 
     static interval whole() { return {-inf, inf}; }
 
-    bool isWhole() const { return lo == -inf && hi == inf; }
+    bool isWhole() const
+    {
+        return (lo == -inf && hi == inf) || lo != lo || hi != hi;
+    }
 
     //- [l, h] from operands a (and b), whole if one is or l, h are NaN
     static interval of(const interval& a, const scalar l, const scalar h)
@@ -619,7 +626,7 @@ struct Foam::scalarExpression::interval
     //- [l, h] of a libm function, widened
     static interval libm(const interval& a, scalar l, scalar h)
     {
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < 8; ++k)
         {
             l = std::nextafter(l, -inf);
             h = std::nextafter(h, inf);
@@ -670,10 +677,15 @@ struct Foam::scalarExpression::interval
         scalar (*f)(scalar)
     )
     {
+        // (sin and cos of an infinity are NaN: whole)
         constexpr scalar pi = constant::mathematical::pi;
-        if (a.isWhole() || !(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6))
+        if (a.isWhole() || !(std::isfinite(a.lo) && std::isfinite(a.hi)))
         {
-            return a.isWhole() ? whole() : interval(-1, 1);
+            return whole();
+        }
+        if (!(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6))
+        {
+            return interval(-1, 1);
         }
         const scalar fLo = f(a.lo), fHi = f(a.hi);
         const interval ends(libm(a, std::min(fLo, fHi), std::max(fLo, fHi)));
