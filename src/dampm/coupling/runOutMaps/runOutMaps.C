@@ -60,16 +60,13 @@ void Foam::runOutMaps::scatterBand
     int32_t hi[2]
 )
 {
-    // The lattice (as gridGeometry::local has it) and the arrays in
-    // locals: stores into the sums cannot then be taken to change them
-    // (benchmarks/outputShare/results.md)
-    const double origin[2] = {g.origin[0], g.origin[1]};
-    const double invDx[2] = {g.invDx[0], g.invDx[1]};
-    const double offset[2] = {double(g.offset[0]), double(g.offset[1])};
-    const int32_t nCells[2] = {g.nCells[0], g.nCells[1]};
+    // The grid and the arrays in locals: stores into the sums cannot then
+    // be taken to change them (benchmarks/outputShare/results.md)
+    const gridGeometry lattice(g);
+    const int32_t* const nCells = lattice.nCells;
     const int32_t r0 = rows[0], r1 = rows[1];
-    const gridGeometry::index sy = g.nodeStride[1];
-    const gridGeometry::index first = g.nodeIndex(0, 0, 0);
+    const gridGeometry::index sy = lattice.nodeStride[1];
+    const gridGeometry::index first = lattice.nodeIndex(0, 0, 0);
     const label n = particles.size();
     const double* x = particles.component(particleArrays::X);
     const double* y = particles.component(particleArrays::Y);
@@ -82,7 +79,7 @@ void Foam::runOutMaps::scatterBand
     int32_t boxLo[2] = {lo[0], lo[1]}, boxHi[2] = {hi[0], hi[1]};
     for (label p = 0; p < n; ++p)
     {
-        const double eta = (y[p] - origin[1])*invDx[1] - offset[1];
+        const double eta = lattice.local(1, y[p]);
         if (!(eta >= 0 && eta <= nCells[1]))
         {
             continue;
@@ -92,7 +89,7 @@ void Foam::runOutMaps::scatterBand
         {
             continue;
         }
-        const double xi = (x[p] - origin[0])*invDx[0] - offset[0];
+        const double xi = lattice.local(0, x[p]);
         if (!(xi >= 0 && xi <= nCells[0]))
         {
             continue;

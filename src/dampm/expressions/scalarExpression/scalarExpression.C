@@ -667,6 +667,27 @@ struct Foam::scalarExpression::interval
         return isTrue ? interval(1) : isFalse ? interval(0) : interval(0, 1);
     }
 
+    //- Does a reach x0 + k period for some whole k (within 1e-6: a spare
+    //  point only loosens a bound)? a finite, |ends| < 1e6
+    static bool reaches
+    (
+        const interval& a,
+        const scalar x0,
+        const scalar period
+    )
+    {
+        const scalar k = std::floor((a.lo - x0)/period);
+        for (int dk = 0; dk <= 2; ++dk)
+        {
+            const scalar x = x0 + period*(k + dk);
+            if (x >= a.lo - 1e-6 && x <= a.hi + 1e-6)
+            {
+                return true;
+            }
+        }
+        return a.hi - a.lo >= period;
+    }
+
     //- The extremes of sin (phase 0) or cos (phase pi/2) over a: at the
     //  ends, or 1 at pi/2 - phase + 2 k pi, -1 at -pi/2 - phase + 2 k pi
     //  inside it (found with a margin: a spare extreme only loosens)
@@ -689,24 +710,10 @@ struct Foam::scalarExpression::interval
         }
         const scalar fLo = f(a.lo), fHi = f(a.hi);
         const interval ends(libm(a, std::min(fLo, fHi), std::max(fLo, fHi)));
-        const auto reaches = [&](const scalar x0)
-        {
-            // x0 + 2 k pi in [lo, hi] for some k, within 1e-6
-            const scalar k = std::floor((a.lo - x0)/(2*pi));
-            for (int dk = 0; dk <= 2; ++dk)
-            {
-                const scalar x = x0 + 2*pi*(k + dk);
-                if (x >= a.lo - 1e-6 && x <= a.hi + 1e-6)
-                {
-                    return true;
-                }
-            }
-            return a.hi - a.lo >= 2*pi;
-        };
         return
         {
-            reaches(-pi/2 - phase) ? -1 : std::max(ends.lo, -1.0),
-            reaches(pi/2 - phase) ? 1 : std::min(ends.hi, 1.0)
+            reaches(a, -pi/2 - phase, 2*pi) ? -1 : std::max(ends.lo, -1.0),
+            reaches(a, pi/2 - phase, 2*pi) ? 1 : std::min(ends.hi, 1.0)
         };
     }
 
@@ -826,18 +833,13 @@ struct Foam::scalarExpression::interval
     {
         // Increasing between its poles, pi/2 + k pi
         constexpr scalar pi = constant::mathematical::pi;
-        if (!(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6))
+        if
+        (
+            !(std::abs(a.lo) < 1e6 && std::abs(a.hi) < 1e6)
+         || reaches(a, pi/2, pi)
+        )
         {
             return whole();
-        }
-        const scalar k = std::floor((a.lo - pi/2)/pi);
-        for (int dk = 0; dk <= 2; ++dk)
-        {
-            const scalar x = pi/2 + pi*(k + dk);
-            if (x >= a.lo - 1e-6 && x <= a.hi + 1e-6)
-            {
-                return whole();
-            }
         }
         return libm(a, std::tan(a.lo), std::tan(a.hi));
     }

@@ -67,16 +67,6 @@ void sampleBreaks
 }
 
 
-//- The first sample of the cell that evaluate takes at s (sample units,
-//  clamped to the hull as it clamps)
-Foam::label cellStart(const Foam::scalar s, const Foam::label n)
-{
-    const Foam::scalar c = !(s >= 0) ? 0 : std::min(s, Foam::scalar(n - 1));
-    return std::min(Foam::label(c), std::max(n - 2, Foam::label(0)));
-}
-
-
-
 static_assert
 (
     std::is_same<Foam::scalar, double>::value,
@@ -857,12 +847,18 @@ Foam::scalar Foam::terrainRaster::highestOver
     // The rounding of a bilinear sum: a few ulps of the largest sample of
     // the cells (a piece's corner and a point inside it are computed in
     // different cells where it is a sample line)
-    scalar magnitude = 0;
-    const label i1 = min(cellStart(s.last(), nx_) + 1, nx_ - 1);
-    const label j1 = min(cellStart(t.last(), ny_) + 1, ny_ - 1);
-    for (label j = cellStart(t.first(), ny_); j <= j1; ++j)
+    // (The first sample of the cell evaluate takes at a break point)
+    const auto cell = [](scalar at, const label n)
     {
-        for (label i = cellStart(s.first(), nx_); i <= i1; ++i)
+        scalar unused;
+        return clampedCell(at, unused, n);
+    };
+    scalar magnitude = 0;
+    const label i1 = min(cell(s.last(), nx_) + 1, nx_ - 1);
+    const label j1 = min(cell(t.last(), ny_) + 1, ny_ - 1);
+    for (label j = cell(t.first(), ny_); j <= j1; ++j)
+    {
+        for (label i = cell(s.first(), nx_); i <= i1; ++i)
         {
             magnitude = std::max(magnitude, std::abs(values_[i + nx_*j]));
         }
