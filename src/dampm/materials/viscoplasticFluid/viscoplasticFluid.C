@@ -11,6 +11,7 @@ License
 #include "viscoplasticFluid.H"
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
+#include "vectorLanes.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -207,26 +208,35 @@ Foam::label Foam::materialModels::viscoplasticFluid::updateBlock
     // s + dt (W s - s W), W the spin), then the pressure. W s - s W =
     // A + A^T with A = W s, written out for the symmetric s and the spin's
     // three components; its trace is zero, so the rotated stress's deviator
-    // is the deviator of s plus it
-    #pragma omp simd
-    for (label k = 0; k < n; ++k)
+    // is the deviator of s plus it. Written once for a Real: four
+    // particles a lanes4 (the same operations lane by lane), the rest one
+    // at a time. (A loop for the vectoriser would stay scalar: under
+    // trapping math it does not compute the relaxed stress of a particle
+    // that keeps the viscous one.)
+    const auto stress = [&](const label k, const auto zero)
     {
+        typedef std::remove_const_t<decltype(zero)> Real;
         const label i = first + k;
-        double s[6];
+        const Real mu2 = loadAt<Real>(twoMu, k);
+        Real s[6];
         for (int m = 0; m < 6; ++m)
         {
-            s[m] = twoMu[k]*D[m][k];
+            s[m] = mu2*loadAt<Real>(D[m], k);
         }
         if (Maxwell)
         {
-            const double wxy = 0.5*(L[1][i] - L[3][i]);
-            const double wxz = 0.5*(L[2][i] - L[6][i]);
-            const double wyz = 0.5*(L[5][i] - L[7][i]);
-            const double sxx = sigma[0][i], sxy = sigma[1][i];
-            const double sxz = sigma[2][i], syy = sigma[3][i];
-            const double syz = sigma[4][i], szz = sigma[5][i];
-            const double mean = (sxx + syy + szz)/3;
-            const double s0[6] =
+            const auto Lc = [&](const int c) { return loadAt<Real>(L[c], i); };
+            const Real wxy = 0.5*(Lc(1) - Lc(3));
+            const Real wxz = 0.5*(Lc(2) - Lc(6));
+            const Real wyz = 0.5*(Lc(5) - Lc(7));
+            const Real sxx = loadAt<Real>(sigma[0], i);
+            const Real sxy = loadAt<Real>(sigma[1], i);
+            const Real sxz = loadAt<Real>(sigma[2], i);
+            const Real syy = loadAt<Real>(sigma[3], i);
+            const Real syz = loadAt<Real>(sigma[4], i);
+            const Real szz = loadAt<Real>(sigma[5], i);
+            const Real mean = (sxx + syy + szz)/3;
+            const Real s0[6] =
             {
                 sxx - mean + dt*2*(wxy*sxy + wxz*sxz),
                 sxy + dt*(wxy*(syy - sxx) + wxz*syz + wyz*sxz),
@@ -237,20 +247,31 @@ Foam::label Foam::materialModels::viscoplasticFluid::updateBlock
             };
             // No decay (mu = 0, or exp underflowing): the viscous stress,
             // as s + (s0 - s) 0 gives for a finite s0
-            const bool relaxes = decay[k] > 0;
+            const Real dk = loadAt<Real>(decay, k);
+            const auto relaxes = dk > 0.0;
             for (int m = 0; m < 6; ++m)
             {
-                s[m] = relaxes ? s[m] + (s0[m] - s[m])*decay[k] : s[m];
+                s[m] = select(relaxes, s[m] + (s0[m] - s[m])*dk, s[m]);
             }
         }
-        s[0] -= pressureOf[k];
-        s[3] -= pressureOf[k];
-        s[5] -= pressureOf[k];
+        const Real pk = loadAt<Real>(pressureOf, k);
+        s[0] -= pk;
+        s[3] -= pk;
+        s[5] -= pk;
         for (int m = 0; m < 6; ++m)
         {
-            sigma[m][i] = s[m];
+            storeAt(sigma[m], i, s[m]);
         }
-        mp.p[i] = -(s[0] + s[3] + s[5])/3;
+        storeAt(mp.p, i, -(s[0] + s[3] + s[5])/3);
+    };
+    label k = 0;
+    for (; k + 4 <= n; k += 4)
+    {
+        stress(k, lanes4{});
+    }
+    for (; k < n; ++k)
+    {
+        stress(k, 0.0);
     }
     return nInverted;
 }
