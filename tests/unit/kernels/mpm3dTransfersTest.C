@@ -17,6 +17,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "uniformGrid.H"
+#include "sameBits.H"
 #include "mpm3dKernels.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
@@ -471,6 +472,77 @@ TEST(mpm3dTransfers, VolumeRatioIsHeldAtTheMaterialsMaxJ)
     }
     EXPECT_TRUE(std::isnan(J[n - 1]));
     EXPECT_TRUE(std::isnan(V[n - 1]));
+}
+
+
+// volumeChangeToParticles3D takes four particles at a time (stencilLanes,
+// nodalMean and setVolumeRatio on lanes4) and the rest one by one: every
+// particle's position, J, volume and strain rate are those of the scalar
+// stencil, nodalMean and setVolumeRatio, bit for bit. Random node ratios
+// and grid velocities, 3 particles left over, and J held at maxJ for some
+TEST(mpm3dTransfers, VolumeChangeFourAtATimeIsEachParticlesBitForBit)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(17);
+    std::uniform_real_distribution<double> u(-1, 1);
+    testParticles tp(g, 3, &gen), ref(g, 3, &gen);
+    const gridIndex n = gridIndex(tp.m.size()) - 5;
+    ASSERT_EQ(n % 4, 3);
+    for (gridIndex i = 0; i < n; ++i)
+    {
+        const double J = 1 + 0.2*u(gen);
+        for (int d = 0; d < 3; ++d)
+        {
+            const double v = 3*u(gen);
+            tp.vGrid[d][i] = ref.vGrid[d][i] = v;
+            ref.x[d][i] = tp.x[d][i];
+        }
+        tp.J[i] = ref.J[i] = J;
+        ref.m[i] = tp.m[i];
+    }
+    mpm3dGrid grid;
+    grid.resize(g.nNodes());
+    for (double& r : grid.dVol)
+    {
+        r = 1 + 0.3*u(gen);
+    }
+    mpm3dSettings set;
+    set.rho0 = 1300;
+    set.maxJ = 1.25;
+    const double dt = 2e-3;
+
+    mpm3dParticles p = tp.view();
+    p.n = n;
+    volumeChangeToParticles3D(g, kernel3(), set, dt, grid, p);
+
+    mpm3dParticles q = ref.view();
+    for (gridIndex i = 0; i < n; ++i)
+    {
+        const stencil<3, kernel3> s
+        (
+            g, kernel3(), q.x[0][i], q.x[1][i], q.x[2][i]
+        );
+        const double ratio = nodalMean(s, grid.dVol.data());
+        for (int d = 0; d < 3; ++d)
+        {
+            q.x[d][i] += dt*q.vGrid[d][i];
+        }
+        setVolumeRatio(q, i, ratio, set, dt);
+    }
+    gridIndex held = 0;
+    for (gridIndex i = 0; i < n; ++i)
+    {
+        held += ref.J[i] == set.maxJ;
+        for (int d = 0; d < 3; ++d)
+        {
+            ASSERT_TRUE(sameBits(tp.x[d][i], ref.x[d][i])) << i;
+        }
+        ASSERT_TRUE(sameBits(tp.J[i], ref.J[i])) << i;
+        ASSERT_TRUE(sameBits(tp.V[i], ref.V[i])) << i;
+        ASSERT_TRUE(sameBits(tp.div[i], ref.div[i])) << i;
+    }
+    EXPECT_GT(held, 0);
+    EXPECT_LT(held, n/2);
 }
 
 

@@ -40,24 +40,17 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "uniformGrid.H"
+#include "sameBits.H"
 #include "depthAveragedKernels.H"
 #include "particleTransfers.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
-#include <cstring>
 #include <random>
 
 using namespace Foam;
 
 namespace
 {
-
-//- The same bits
-bool sameBits(const double a, const double b)
-{
-    return std::memcmp(&a, &b, sizeof(double)) == 0;
-}
-
 
 //- Random columns sorted by cell on a 2D grid, with every per-column array
 //  the kernels read or write, and random node fields
@@ -555,6 +548,94 @@ void checkStencilLanes(const Kernel& kernel, const double lp)
 }
 
 
+//- 3D: four particles' stencils and rows of nodes against four scalar
+//  stencils, bit for bit, at random positions and on cell faces and
+//  centres (lp either side of them) of a grid of unequal cell sizes
+template<class Kernel>
+void checkStencilLanes3D(const Kernel& kernel, const double lp)
+{
+    const gridGeometry g
+    (
+        uniformGrid(3, {10, -5, 2}, {0.4, 0.5, 0.3}, {12, 10, 9})
+    );
+    constexpr int W = Kernel::width;
+    std::mt19937 gen(9);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double special[] = {0, 0.5, lp, 1 - lp, 0.5 - lp, 0.5 + lp, 3, 8};
+    for (int trial = 0; trial < 1000; ++trial)
+    {
+        double x[3][4];
+        for (int d = 0; d < 3; ++d)
+        {
+            for (int l = 0; l < 4; ++l)
+            {
+                const double s = trial < 64
+                  ? special[(trial + 3*l + d) % 8] + (trial/8) % 3
+                  : (g.nCells[d] - 0.001)*u(gen);
+                x[d][l] = g.origin[d] + s*g.dx[d];
+            }
+        }
+        const stencilLanes<Kernel, 3> lanes(g, kernel, x[0], x[1], x[2]);
+        std::vector<double> rows[4];
+        std::vector<int32_t> firsts[4];
+        lanes.forEachRow
+        (
+            [&]
+            (
+                const laneIndex4 first, const int, const int,
+                const lanes4 wbc, const lanes4 dwb, const lanes4 dwc
+            )
+            {
+                for (int l = 0; l < 4; ++l)
+                {
+                    firsts[l].push_back(first[l]);
+                    rows[l].insert(rows[l].end(), {wbc[l], dwb[l], dwc[l]});
+                }
+            }
+        );
+        for (int l = 0; l < 4; ++l)
+        {
+            const stencil<3, Kernel> st
+            (
+                g, kernel, x[0][l], x[1][l], x[2][l]
+            );
+            ASSERT_EQ(lanes.base[l], st.base) << "lane " << l;
+            for (int d = 0; d < 3; ++d)
+            {
+                ASSERT_TRUE(sameBits(lanes.r0[d][l], st.r0[d])) << l;
+                for (int a = 0; a < W; ++a)
+                {
+                    ASSERT_TRUE(sameBits(lanes.w[d][a][l], st.w[d][a]))
+                        << "lane " << l << " axis " << d;
+                    ASSERT_TRUE(sameBits(lanes.dw[d][a][l], st.dw[d][a]))
+                        << "lane " << l << " axis " << d;
+                }
+            }
+            std::size_t k = 0;
+            st.forEachRow
+            (
+                [&]
+                (
+                    const int32_t first, const int, const int,
+                    const double wbc, const double dwb, const double dwc
+                )
+                {
+                    ASSERT_EQ(firsts[l][k/3], first);
+                    for (const double e : {wbc, dwb, dwc})
+                    {
+                        ASSERT_TRUE(sameBits(rows[l][k++], e)) << l;
+                    }
+                }
+            );
+        }
+        if (::testing::Test::HasFatalFailure())
+        {
+            return;
+        }
+    }
+}
+
+
 //- The force scatter with S5 in the same pass, against S5 column by
 //  column (gatherColumn) then the scalar scatter; each on its own copy of
 //  the same random columns
@@ -766,6 +847,14 @@ TEST(vectorLanes, FourStencilsAtOnceAreTheScalarStencilsBitForBit)
     {
         checkStencilLanes(GIMPKernel(lp), lp);
     }
+}
+
+
+TEST(vectorLanes, FourStencilsAtOnceIn3DAreTheScalarStencilsBitForBit)
+{
+    checkStencilLanes3D(linearKernel(), 0.25);
+    checkStencilLanes3D(quadraticBSplineKernel(), 0.25);
+    checkStencilLanes3D(GIMPKernel(0.25), 0.25);
 }
 
 
