@@ -571,8 +571,9 @@ void checkStencilLanes3D(const Kernel& kernel, const double lp)
             {
                 const double s = trial < 64
                   ? special[(trial + 3*l + d) % 8] + (trial/8) % 3
-                  : (g.nCells[d] - 0.001)*u(gen);
-                x[d][l] = g.origin[d] + s*g.dx[d];
+                  : g.nCells[d]*u(gen);
+                x[d][l] =
+                    g.origin[d] + std::min(s, g.nCells[d] - 0.001)*g.dx[d];
             }
         }
         const stencilLanes<Kernel, 3> lanes(g, kernel, x[0], x[1], x[2]);
@@ -595,6 +596,7 @@ void checkStencilLanes3D(const Kernel& kernel, const double lp)
         );
         for (int l = 0; l < 4; ++l)
         {
+            ASSERT_EQ(firsts[l].size(), std::size_t(W*W));
             const stencil<3, Kernel> st
             (
                 g, kernel, x[0][l], x[1][l], x[2][l]
@@ -620,6 +622,7 @@ void checkStencilLanes3D(const Kernel& kernel, const double lp)
                     const double wbc, const double dwb, const double dwc
                 )
                 {
+                    ASSERT_LT(k, rows[l].size());
                     ASSERT_EQ(firsts[l][k/3], first);
                     for (const double e : {wbc, dwb, dwc})
                     {
@@ -627,6 +630,7 @@ void checkStencilLanes3D(const Kernel& kernel, const double lp)
                     }
                 }
             );
+            ASSERT_EQ(k, rows[l].size());
         }
         if (::testing::Test::HasFatalFailure())
         {

@@ -30,6 +30,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "sameBits.H"
+#include "testCase.H"
 #include "materialState.H"
 #include "viscoplasticFluid.H"
 #include <gtest/gtest.h>
@@ -382,6 +383,33 @@ TEST(viscoplasticFluid, UpdateOfManyParticlesIsTheTensorFormula)
 }
 
 
+namespace
+{
+
+//- The Maxwell decay exp(-G dt/mu) of particle i of a state whose gradient
+//  is L (0: none, the particle keeps no stress memory)
+double maxwellDecay
+(
+    materialState& state,
+    const materialModel& model,
+    const label i,
+    const tensor3& L,
+    const double G,
+    const double dt
+)
+{
+    const auto& fluid =
+        dynamic_cast<const materialModels::viscoplasticFluid&>(model);
+    const tensor3 D =
+        materialParticles::dev(state.view().strainRate(i, L));
+    const double mu =
+        (*fluid.viscosityLaw())(std::sqrt(2*D.squaredNorm()));
+    return G > 0 && mu > 0 ? std::exp(-G*dt/mu) : 0;
+}
+
+} // End anonymous namespace
+
+
 TEST(viscoplasticFluid, ParticlesUpdatedTogetherAsEachAlone)
 {
     // The update takes four particles at a time in vector lanes and the
@@ -389,14 +417,16 @@ TEST(viscoplasticFluid, ParticlesUpdatedTogetherAsEachAlone)
     // groups of four and three alone) updated together give, bit for bit,
     // the stress and pressure of each updated on its own. A Maxwell fluid
     // at two steps (at 0.5 s the flowing particles' decay underflows to 0,
-    // the plugs' does not) and a purely viscous one
+    // the plugs' does not: both kinds in most groups of four) and a purely
+    // viscous one
     const std::string bingham(" mu 10; tauY 200; m 100;");
-    for (const std::string coeffs : {bingham, bingham + " shearModulus 0;"})
+    for (const std::string& coeffs : {bingham, bingham + " shearModulus 0;"})
     {
         autoPtr<materialModel> model
         (
             materialModel::New(materialDict("Bingham", tait + coeffs))
         );
+        const double G = coeffs == bingham ? 0.25*rho*c*c : 0;
         for (const double dt : {1e-3, 0.5})
         {
             const label n = 1003;
@@ -404,6 +434,7 @@ TEST(viscoplasticFluid, ParticlesUpdatedTogetherAsEachAlone)
             std::vector<std::unique_ptr<materialState>> alone;
             std::mt19937 gen(11);
             std::uniform_real_distribution<double> uniform(-1, 1);
+            label withoutDecay = 0;
             for (label i = 0; i < n; ++i)
             {
                 // Strain rates from plug (1e-4 s^-1) to flowing (20 s^-1)
@@ -424,6 +455,20 @@ TEST(viscoplasticFluid, ParticlesUpdatedTogetherAsEachAlone)
                     state->setJ(j, J);
                     state->setStress(j, s);
                 }
+                withoutDecay += maxwellDecay(all, *model, i, L, G, dt) == 0;
+            }
+            if (G == 0)
+            {
+                EXPECT_EQ(withoutDecay, n);
+            }
+            else if (dt < 0.1)
+            {
+                EXPECT_EQ(withoutDecay, 0);
+            }
+            else
+            {
+                EXPECT_GT(withoutDecay, n/7);
+                EXPECT_LT(withoutDecay, n - n/7);
             }
             all.update(*model, dt);
             label differ = 0;
@@ -439,6 +484,57 @@ TEST(viscoplasticFluid, ParticlesUpdatedTogetherAsEachAlone)
                 differ += !same;
             }
             EXPECT_EQ(differ, 0) << coeffs << " dt " << dt;
+        }
+    }
+}
+
+
+TEST(viscoplasticFluid, NoDecayTrapsNoMatterTheStressItForgets)
+{
+    // With FOAM_SIGFPE's traps on, eight flowing particles (two groups of
+    // four) whose Maxwell decay underflows to 0 forget their last stress,
+    // even an infinite shear stress: the update traps nowhere and gives the
+    // viscous stress, as the same particles with no stress before
+    autoPtr<materialModel> model
+    (
+        materialModel::New
+        (
+            materialDict("Bingham", tait + " mu 10; tauY 200; m 100;")
+        )
+    );
+    const double G = 0.25*rho*c*c, dt = 0.5;
+    const label n = 8;
+    materialState stressed(*model, n), unstressed(*model, n);
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> uniform(0.5, 1);
+    for (label i = 0; i < n; ++i)
+    {
+        tensor3 L;
+        for (int k = 0; k < 9; ++k)
+        {
+            L(k/3, k%3) = (k%2 ? 20 : -20)*uniform(gen);
+        }
+        tensor3 s = tensor3::Zero();
+        s(0, 1) = s(1, 0) = i == 5
+          ? std::numeric_limits<double>::infinity() : 1e300;
+        for (materialState* state : {&stressed, &unstressed})
+        {
+            state->setGradient(i, L);
+        }
+        stressed.setStress(i, s);
+        ASSERT_EQ(maxwellDecay(stressed, *model, i, L, G, dt), 0) << i;
+    }
+    {
+        const solverFpTraps traps;
+        stressed.update(*model, dt);
+        unstressed.update(*model, dt);
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        const tensor3 a = stressed.stress(i), b = unstressed.stress(i);
+        for (int k = 0; k < 9; ++k)
+        {
+            EXPECT_TRUE(sameBits(a.data()[k], b.data()[k])) << i;
         }
     }
 }

@@ -12,6 +12,7 @@ License
 #include "knownKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "vectorLanes.H"
+#include <type_traits>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -246,12 +247,15 @@ Foam::label Foam::materialModels::viscoplasticFluid::updateBlock
                 szz - mean - dt*2*(wxz*sxz + wyz*syz)
             };
             // No decay (mu = 0, or exp underflowing): the viscous stress,
-            // as s + (s0 - s) 0 gives for a finite s0
+            // as s + (s0 - s) 0 gives for a finite s0. Both are computed,
+            // and there the relaxation from s itself (0 for a finite s),
+            // so that no s0, however large, can trap where it is not used
             const Real dk = loadAt<Real>(decay, k);
             const auto relaxes = dk > 0.0;
             for (int m = 0; m < 6; ++m)
             {
-                s[m] = select(relaxes, s[m] + (s0[m] - s[m])*dk, s[m]);
+                const Real from = select(relaxes, s0[m], s[m]);
+                s[m] = select(relaxes, s[m] + (from - s[m])*dk, s[m]);
             }
         }
         const Real pk = loadAt<Real>(pressureOf, k);
