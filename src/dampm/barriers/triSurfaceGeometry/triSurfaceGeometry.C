@@ -129,6 +129,7 @@ void Foam::barrierGeometries::triSurfaceGeometry::readSurface()
     outwardNormal_ = surface_->faceNormals();
     search_.reset(new triSurfaceSearch(*surface_));
     buildSearch();
+    nearest_.reset(new triSurfaceNearest(*surface_, search_->tree()));
 }
 
 
@@ -299,19 +300,16 @@ void Foam::barrierGeometries::triSurfaceGeometry::distance
     vectorField& normal
 ) const
 {
-    // The octree's own query, not triSurfaceSearch::findNearest, which
-    // sets (and resets) a static tolerance, a race between threads; the
-    // same nearest triangle
-    const indexedOctree<treeDataTriSurface>& tree = search_->tree();
-    const boolList inside(search_->calcInside(points));
-
+    // The octree's answers (triSurfaceNearest), not triSurfaceSearch::
+    // findNearest's, which sets (and resets) a static tolerance, a race
+    // between threads; the same nearest triangle
     phi.setSize(points.size());
     normal.setSize(points.size());
     forAll(points, i)
     {
-        const pointIndexHit hit = tree.findNearest(points[i], GREAT);
+        const pointIndexHit hit = nearest_->nearest(points[i]);
         const scalar d = mag(points[i] - hit.hitPoint());
-        phi[i] = inside[i] ? -d : d;
+        phi[i] = nearest_->inside(points[i]) ? -d : d;
         normal[i] = outwardNormal_[hit.index()];
     }
 }
@@ -360,7 +358,12 @@ void Foam::barrierGeometries::triSurfaceGeometry::inside
     boolList& in
 ) const
 {
-    in = search_->calcInside(points);
+    // (triSurfaceSearch::calcInside's answers)
+    in.setSize(points.size());
+    forAll(points, i)
+    {
+        in[i] = nearest_->inside(points[i]);
+    }
 }
 
 
