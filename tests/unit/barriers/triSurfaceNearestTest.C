@@ -12,7 +12,9 @@ Description
     inside test of triSurfaceSearch::calcInside. Two closed surfaces: a
     sphere of 1,280 triangles (subdivided icosahedron: every point near a
     vertex or an edge) and an L-shaped prism of 20 (concave edges, where
-    two faces are equally near). The points: uniform in and around the
+    two faces are equally near); most answers from the lists, not the
+    octree. With fewer boxes allowed than leaves, one a leaf; on a surface
+    with a sliver (a prism over a needle), the octree's answers alone. The points: uniform in and around the
     surface's box; near random points of the triangles, offset by 1e-12
     to 1e-2 along and across; on vertices, edge midpoints and centroids,
     exactly and offset by 1e-9; beyond the octree's box; NaN. Its lists
@@ -93,31 +95,38 @@ triSurface sphere(const point& c, const scalar r, const int n)
 }
 
 
-//- The L of (0 0) (2 0) (2 1) (1 1) (1 2) (0 2), from z = 0 to 1
-triSurface lPrism()
+//- The prism from z = 0 to 1 over the polygon xy (counter-clockwise),
+//  its caps fanned from the first point (a convex part of it)
+triSurface prism(const List<FixedList<scalar, 2>>& xy)
 {
-    const scalar xy[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-    pointField points(12);
-    for (label i = 0; i < 6; ++i)
+    const label n = xy.size();
+    pointField points(2*n);
+    for (label i = 0; i < n; ++i)
     {
         points[i] = point(xy[i][0], xy[i][1], 0);
-        points[i + 6] = point(xy[i][0], xy[i][1], 1);
+        points[i + n] = point(xy[i][0], xy[i][1], 1);
     }
     DynamicList<labelledTri> faces;
-    for (label i = 0; i < 6; ++i)
+    for (label i = 0; i < n; ++i)
     {
-        const label j = (i + 1) % 6;
-        faces.append(labelledTri(i, j, j + 6, 0));
-        faces.append(labelledTri(i, j + 6, i + 6, 0));
+        const label j = (i + 1) % n;
+        faces.append(labelledTri(i, j, j + n, 0));
+        faces.append(labelledTri(i, j + n, i + n, 0));
     }
-    // The L's caps: (0 1 2 3), (0 3 4 5), each two triangles
-    const label cap[4][3] = {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}};
-    for (const auto& f : cap)
+    for (label i = 1; i + 1 < n; ++i)
     {
-        faces.append(labelledTri(f[0], f[1], f[2], 0));
-        faces.append(labelledTri(f[0] + 6, f[2] + 6, f[1] + 6, 0));
+        faces.append(labelledTri(0, i + 1, i, 0));
+        faces.append(labelledTri(n, i + n, i + 1 + n, 0));
     }
     return triSurface(faces, geometricSurfacePatchList(), points);
+}
+
+
+//- The L of (0 0) (2 0) (2 1) (1 1) (1 2) (0 2), from z = 0 to 1 (its
+//  caps fanned from (0 0): the L is convex as seen from there)
+triSurface lPrism()
+{
+    return prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
 }
 
 
@@ -164,59 +173,96 @@ pointField samples(const triSurface& surf, std::mt19937& gen)
     return pointField(pts);
 }
 
+
+
+//- The octree's answers and the lists' at the samples: how many differ
+//  (failing the test at the first few) and how many the lists answered
+void compare
+(
+    const triSurface& surf,
+    const label maxBoxes,
+    std::mt19937& gen,
+    label& nFromLists,
+    label& nSamples
+)
+{
+    const triSurfaceSearch search(surf);
+    const auto& tree = search.tree();
+    tree.getVolumeType(tree.bb().centre());
+    surf.faceNormals();
+    surf.edgeFaces();
+    surf.pointEdges();
+    const triSurfaceNearest fast(surf, tree, maxBoxes);
+    if (surf.size() > 100)
+    {
+        EXPECT_LT(fast.meanCandidates(), 0.1*surf.size());
+    }
+
+    const pointField pts(samples(surf, gen));
+    const boolList in(search.calcInside(pts));
+    label nIn = 0, differ = 0;
+    nFromLists = 0;
+    nSamples = pts.size();
+    forAll(pts, i)
+    {
+        const pointIndexHit a = tree.findNearest(pts[i], GREAT);
+        bool both = false;
+        const pointIndexHit b = fast.nearest(pts[i], both);
+        const pointIndexHit c = fast.nearest(pts[i]);
+        const bool same =
+            a.hit() == b.hit() && a.index() == b.index()
+         && b.hit() == c.hit() && b.index() == c.index()
+         && sameBits(a.rawPoint().x(), b.rawPoint().x())
+         && sameBits(a.rawPoint().y(), b.rawPoint().y())
+         && sameBits(a.rawPoint().z(), b.rawPoint().z())
+         && in[i] == fast.inside(pts[i]) && in[i] == both;
+        differ += !same;
+        nIn += in[i];
+        nFromLists += fast.fromLists(pts[i]);
+        EXPECT_TRUE(same)
+            << "(" << pts[i].x() << " " << pts[i].y() << " " << pts[i].z()
+            << "): faces " << a.index() << " and " << b.index();
+        if (differ > 5)
+        {
+            break;
+        }
+    }
+    EXPECT_EQ(differ, 0) << surf.size() << " triangles";
+    // Both sides are sampled
+    EXPECT_GT(nIn, pts.size()/10);
+    EXPECT_LT(nIn, pts.size() - pts.size()/10);
+}
+
 } // End anonymous namespace
 
 
 TEST(triSurfaceNearest, TheOctreesNearestTriangleAndInsideTestBitForBit)
 {
     std::mt19937 gen(7);
-    const triSurface surfaces[] =
-    {
-        sphere(point(1, 2, 3), 0.5, 3),
-        lPrism()
-    };
-    for (const triSurface& surf : surfaces)
-    {
-        const triSurfaceSearch search(surf);
-        const auto& tree = search.tree();
-        tree.getVolumeType(tree.bb().centre());
-        surf.faceNormals();
-        surf.edgeFaces();
-        surf.pointEdges();
-        const triSurfaceNearest fast(surf, tree);
-        if (surf.size() > 100)
-        {
-            EXPECT_LT(fast.meanCandidates(), 0.1*surf.size());
-        }
+    label nFromLists = 0, n = 0;
+    compare(sphere(point(1, 2, 3), 0.5, 3), 1 << 17, gen, nFromLists, n);
+    // Most points answered by the lists (70 % and 73 %; the others beyond
+    // the octree's box, a third of the uniform samples, or on an edge or a
+    // vertex, where two triangles tie)
+    EXPECT_GT(nFromLists, 0.6*n) << nFromLists << " of " << n;
+    compare(lPrism(), 1 << 17, gen, nFromLists, n);
+    EXPECT_GT(nFromLists, 0.6*n) << nFromLists << " of " << n;
+}
 
-        const pointField pts(samples(surf, gen));
-        const boolList in(search.calcInside(pts));
-        label nIn = 0, differ = 0;
-        forAll(pts, i)
-        {
-            const pointIndexHit a = tree.findNearest(pts[i], GREAT);
-            const pointIndexHit b = fast.nearest(pts[i]);
-            const bool same =
-                a.hit() == b.hit() && a.index() == b.index()
-             && sameBits(a.rawPoint().x(), b.rawPoint().x())
-             && sameBits(a.rawPoint().y(), b.rawPoint().y())
-             && sameBits(a.rawPoint().z(), b.rawPoint().z())
-             && in[i] == fast.inside(pts[i]);
-            differ += !same;
-            nIn += in[i];
-            EXPECT_TRUE(same)
-                << "(" << pts[i].x() << " " << pts[i].y() << " " << pts[i].z()
-                << "): faces " << a.index() << " and " << b.index();
-            if (differ > 5)
-            {
-                break;
-            }
-        }
-        EXPECT_EQ(differ, 0) << surf.size() << " triangles";
-        // Both sides are sampled
-        EXPECT_GT(nIn, pts.size()/10);
-        EXPECT_LT(nIn, pts.size() - pts.size()/10);
-    }
+
+TEST(triSurfaceNearest, OneBoxPerLeafAtTheLeastAndTheOctreeBySlivers)
+{
+    std::mt19937 gen(11);
+    label nFromLists = 0, n = 0;
+
+    // Fewer boxes allowed than the octree has leaves: one box a leaf
+    compare(sphere(point(1, 2, 3), 0.5, 3), 1, gen, nFromLists, n);
+    EXPECT_GT(nFromLists, 0);
+
+    // A needle of a cross-section (angle 1e-5 at a corner, its caps
+    // slivers): no lists, every answer the octree's
+    compare(prism({{0, 0}, {1, 0}, {1, 1e-5}}), 1 << 17, gen, nFromLists, n);
+    EXPECT_EQ(nFromLists, 0);
 }
 
 

@@ -307,9 +307,10 @@ void Foam::barrierGeometries::triSurfaceGeometry::distance
     normal.setSize(points.size());
     forAll(points, i)
     {
-        const pointIndexHit hit = nearest_->nearest(points[i]);
+        bool in;
+        const pointIndexHit hit = nearest_->nearest(points[i], in);
         const scalar d = mag(points[i] - hit.hitPoint());
-        phi[i] = nearest_->inside(points[i]) ? -d : d;
+        phi[i] = in ? -d : d;
         normal[i] = outwardNormal_[hit.index()];
     }
 }

@@ -17,9 +17,8 @@ License
 
 namespace
 {
-    //- Boxes per axis of a leaf at most, and in all at most
+    //- Boxes per axis of a leaf at most
     constexpr Foam::label maxPerAxis = 16;
-    constexpr Foam::label maxBoxes = 1 << 17;
 
     //- Relative widening of a box's candidate radius (rounding: the lists
     //  hold more triangles, never fewer)
@@ -28,26 +27,62 @@ namespace
     //- How far beyond its leaf's box (in boxes) a point is taken as in it
     //  (rounding at the box's faces; far within the widened radius)
     constexpr Foam::scalar beyond = 1e-9;
+
+    //- A sliver: sin^2 of its angle at a vertex below this
+    constexpr Foam::scalar sliverSin2 = 1e-8;
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::triSurfaceNearest::leafOf(const point& p) const
+bool Foam::triSurfaceNearest::hasSliver() const
 {
+    const pointField& points = surf_.points();
+    for (const labelledTri& f : surf_)
+    {
+        for (label v = 0; v < 3; ++v)
+        {
+            const vector a(points[f[(v + 1) % 3]] - points[f[v]]);
+            const vector b(points[f[(v + 2) % 3]] - points[f[v]]);
+            if (!(magSqr(a ^ b) >= sliverSin2*magSqr(a)*magSqr(b)))
+            {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+
+Foam::label Foam::triSurfaceNearest::descend
+(
+    const point& p,
+    volumeType& type
+) const
+{
+    type = volumeType::MIXED;
     const List<octree::node>& nodes = tree_.nodes();
-    label nodeI = 0;
-    while (!nodes.empty())
+    if (nodes.empty())
+    {
+        type = volumeType::UNKNOWN;
+        return -1;
+    }
+    for (label nodeI = 0;;)
     {
         const octree::node& nod = nodes[nodeI];
-        const labelBits index = nod.subNodes_[nod.bb_.subOctant(p)];
+        const direction octant = nod.bb_.subOctant(p);
+        if (type == volumeType::MIXED)
+        {
+            type =
+                volumeType::type(tree_.nodeTypes().get((nodeI << 3) + octant));
+        }
+        const labelBits index = nod.subNodes_[octant];
         if (!octree::isNode(index))
         {
             return octree::isContent(index) ? octree::getContent(index) : -1;
         }
         nodeI = octree::getNode(index);
     }
-    return -1;
 }
 
 
@@ -59,9 +94,13 @@ Foam::label Foam::triSurfaceNearest::nearestCandidate
     label& nearType
 ) const
 {
-    // The box of the leaf holding p (a point beyond the leaf's box, which
-    // the octree's descent gives for a point outside its own: none)
+    // p's box in its leaf (a point outside the octree's box can descend to
+    // a leaf beyond which it lies: the octree's)
     const leafBoxes& l = leaves_[leaf];
+    if (l.k == 0)
+    {
+        return -1;
+    }
     label ijk[3];
     for (direction d = 0; d < 3; ++d)
     {
@@ -74,31 +113,80 @@ Foam::label Foam::triSurfaceNearest::nearestCandidate
     }
     const label box = l.first + ijk[0] + l.k*(ijk[1] + l.k*ijk[2]);
 
-    // The smallest distance, as the octree computes it (findNearestOp)
+    // The smallest distance and the next, as the octree computes them
+    // (findNearestOp)
     const pointField& points = surf_.points();
-    scalar best = VGREAT;
+    scalar best = GREAT, next = GREAT;
     label facei = -1;
-    bool tie = false;
     for (label j = start_[box]; j < start_[box + 1]; ++j)
     {
         const label f = faces_[j];
-        label type = -1, edge = -1;
-        const pointHit h = surf_[f].nearestPointClassify(p, points, type, edge);
-        const scalar d2 = sqr(h.distance());
-        if (d2 < best)
+        label type = -1, where = -1;
+        const pointHit h = surf_[f].nearestPointClassify(p, points, type, where);
+        const scalar d = h.distance();
+        if (d < best)
         {
-            best = d2;
+            next = best;
+            best = d;
             facei = f;
             hit = h;
             nearType = type;
-            tie = false;
         }
-        else if (d2 == best)
+        else if (d < next)
         {
-            tie = true;
+            next = d;
         }
     }
-    return tie ? -1 : facei;
+    return next - best > tieDistance_ ? facei : -1;
+}
+
+
+Foam::label Foam::triSurfaceNearest::candidate
+(
+    const point& p,
+    volumeType& type,
+    pointHit& hit,
+    label& nearType
+) const
+{
+    const label leaf = descend(p, type);
+    return leaf >= 0 ? nearestCandidate(leaf, p, hit, nearType) : -1;
+}
+
+
+bool Foam::triSurfaceNearest::side
+(
+    const point& p,
+    const volumeType type,
+    const label facei,
+    const pointHit& hit,
+    const label nearType
+) const
+{
+    // calcInside: a point outside the octree's box is outside; else
+    // getVolumeType, whose first type on the way that is not MIXED holds
+    if (!tree_.bb().contains(p) || type == volumeType::UNKNOWN)
+    {
+        return false;
+    }
+    if (type != volumeType::MIXED)
+    {
+        return type == volumeType::INSIDE;
+    }
+    if (facei < 0)
+    {
+        return tree_.getVolumeType(p) == volumeType::INSIDE;
+    }
+    // At a leaf, treeDataPrimitivePatch<triSurface>::getVolumeType: the
+    // side of the nearest triangle (triSurfaceTools::surfaceSide, which
+    // goes by the face's normal where the nearest point is inside it)
+    if (nearType == triPointRef::NONE)
+    {
+        return !(((p - hit.rawPoint()) & surf_.faceNormals()[facei]) > 0);
+    }
+    return
+        triSurfaceTools::surfaceSide(surf_, p, facei)
+     == triSurfaceTools::INSIDE;
 }
 
 
@@ -130,22 +218,31 @@ void Foam::triSurfaceNearest::addCandidates
 Foam::triSurfaceNearest::triSurfaceNearest
 (
     const triSurface& surf,
-    const octree& tree
+    const octree& tree,
+    const label maxBoxes
 )
 :
     surf_(surf),
     tree_(tree),
+    tieDistance_(1e-12*(mag(tree.bb().min()) + mag(tree.bb().max()) + 1)),
     leaves_(tree.contents().size(), leafBoxes{point::zero, vector::zero, 0, 0}),
     start_(1, 0)
 {
     const List<octree::node>& nodes = tree.nodes();
-    if (nodes.empty())
+    if (tree.nodeTypes().size() != 8*nodes.size())
     {
+        FatalErrorInFunction
+            << "the octree's octant types are not built (call its"
+            << " getVolumeType once first)" << abort(FatalError);
+    }
+    if (nodes.empty() || hasSliver())
+    {
+        // (Every leaf without boxes: the octree answers)
         return;
     }
 
     // Boxes of about 1/256 of the surface's extent, fewer where there would
-    // be more than maxBoxes in all
+    // be more than maxBoxes in all (one per leaf at the least)
     const auto perAxis = [](const treeBoundBox& box, const scalar target)
     {
         const scalar n = std::ceil(cmptMax(box.span())/target);
@@ -167,8 +264,9 @@ Foam::triSurfaceNearest::triSurfaceNearest
         }
         return total;
     };
-    scalar target = cmptMax(tree.bb().span())/256;
-    while (nBoxes(target) > maxBoxes)
+    const scalar extent = cmptMax(tree.bb().span());
+    scalar target = extent/256;
+    while (target < extent && nBoxes(target) > maxBoxes)
     {
         target *= 1.25;
     }
@@ -209,68 +307,51 @@ Foam::triSurfaceNearest::triSurfaceNearest
 
 Foam::pointIndexHit Foam::triSurfaceNearest::nearest(const point& p) const
 {
-    const label leaf = leafOf(p);
-    if (leaf >= 0)
-    {
-        pointHit hit;
-        label nearType = -1;
-        const label facei = nearestCandidate(leaf, p, hit, nearType);
-        if (facei >= 0)
-        {
-            return pointIndexHit(true, hit.rawPoint(), facei);
-        }
-    }
-    return tree_.findNearest(p, GREAT);
+    volumeType type;
+    pointHit hit;
+    label nearType = -1;
+    const label facei = candidate(p, type, hit, nearType);
+    return
+        facei >= 0
+      ? pointIndexHit(true, hit.rawPoint(), facei)
+      : tree_.findNearest(p, GREAT);
 }
 
 
 bool Foam::triSurfaceNearest::inside(const point& p) const
 {
-    // triSurfaceSearch::calcInside: outside the octree's box, outside;
-    // else indexedOctree::getVolumeType, its octants' types down to a leaf
-    const List<octree::node>& nodes = tree_.nodes();
-    if (!tree_.bb().contains(p) || nodes.empty())
-    {
-        return false;
-    }
-    label nodeI = 0;
-    for (;;)
-    {
-        const octree::node& nod = nodes[nodeI];
-        const direction octant = nod.bb_.subOctant(p);
-        const volumeType type =
-            volumeType::type(tree_.nodeTypes().get((nodeI << 3) + octant));
-        if (type != volumeType::MIXED)
-        {
-            return type == volumeType::INSIDE;
-        }
-        const labelBits index = nod.subNodes_[octant];
-        if (octree::isNode(index))
-        {
-            nodeI = octree::getNode(index);
-            continue;
-        }
-        pointHit hit;
-        label nearType = -1;
-        const label facei =
-            octree::isContent(index)
-          ? nearestCandidate(octree::getContent(index), p, hit, nearType)
-          : -1;
-        if (facei < 0)
-        {
-            return tree_.getVolumeType(p) == volumeType::INSIDE;
-        }
-        // treeDataPrimitivePatch<triSurface>::getVolumeType: the side of
-        // the nearest triangle (triSurfaceTools::surfaceSide; by the face's
-        // normal where the nearest point is inside the triangle)
-        if (nearType == triPointRef::NONE)
-        {
-            return !(((p - hit.rawPoint()) & surf_.faceNormals()[facei]) > 0);
-        }
-        return
-            triSurfaceTools::surfaceSide(surf_, p, facei)
-         == triSurfaceTools::INSIDE;
-    }
+    volumeType type;
+    pointHit hit;
+    label nearType = -1;
+    const label facei = candidate(p, type, hit, nearType);
+    return side(p, type, facei, hit, nearType);
+}
+
+
+Foam::pointIndexHit Foam::triSurfaceNearest::nearest
+(
+    const point& p,
+    bool& inside
+) const
+{
+    volumeType type;
+    pointHit hit;
+    label nearType = -1;
+    const label facei = candidate(p, type, hit, nearType);
+    inside = side(p, type, facei, hit, nearType);
+    return
+        facei >= 0
+      ? pointIndexHit(true, hit.rawPoint(), facei)
+      : tree_.findNearest(p, GREAT);
+}
+
+
+bool Foam::triSurfaceNearest::fromLists(const point& p) const
+{
+    volumeType type;
+    pointHit hit;
+    label nearType = -1;
+    return candidate(p, type, hit, nearType) >= 0;
 }
 
 
