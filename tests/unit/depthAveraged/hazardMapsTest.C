@@ -10,7 +10,9 @@ Description
     Hazard maps: the maxima over time at the grid nodes, exported at the
     end of the run (not with the point fields) in the terrain's map
     coordinates as ESRI ASCII and, for a GeoTIFF terrain, as a GeoTIFF that reads back with the
-    same values and georeference.
+    same values and georeference. The maxima kept in a 3D stage's state
+    (saveMaxima, made as tokens) print as the lists they are (the text of
+    a scalarList entry, at exact precision) and load back bit for bit.
 
 \*---------------------------------------------------------------------------*/
 
@@ -20,6 +22,10 @@ Description
 #include "terrainRaster.H"
 #include "testCase.H"
 #include "OSspecific.H"
+#include "OStringStream.H"
+#include "IStringStream.H"
+#include "exactPrecision.H"
+#include "sameBits.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
@@ -126,6 +132,57 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
     terrainRaster maxU(out/"maxSpeed.asc");
     const label interior = g.nCells[0]/2 + (g.nCells[0] + 1)*(g.nCells[1]/2);
     EXPECT_NEAR(maxU.values()[interior], 2*std::sqrt(1.25), 1e-9);
+
+    // The state of a 3D stage that continues the maps: the text of the
+    // lists given as values, and the maxima back bit for bit
+    const exactPrecision exact;
+    dictionary state;
+    maps.saveMaxima(state);
+    dictionary asLists;
+    for (const word& name : hazardMaps::names)
+    {
+        asLists.set(name, state.get<scalarList>(name));
+    }
+    OStringStream made, lists;
+    made << state;
+    lists << asLists;
+    EXPECT_EQ(made.str(), lists.str());
+    EXPECT_NE(made.str().find(" 0 "), std::string::npos);
+
+    // (and the values those of the exported map, bit for bit: its text
+    // is the shortest that reads back the same double)
+    const scalarList savedH(state.get<scalarList>("maxHeight"));
+    const terrainRaster ascH(out/"maxHeight.asc");
+    for (label j = 0; j <= g.nCells[1]; ++j)
+    {
+        for (label i = 0; i <= g.nCells[0]; ++i)
+        {
+            EXPECT_TRUE
+            (
+                sameBits(savedH[g.nodeIndex(i, j, 0)], ascH.value(i, j))
+            ) << i << " " << j;
+        }
+    }
+
+    IStringStream is(made.str());
+    const dictionary read(is);
+    hazardMaps loaded(grid, *topo, Znodes.data());
+    loaded.loadMaxima(read);
+    dictionary again;
+    loaded.saveMaxima(again);
+    for (const word& name : hazardMaps::names)
+    {
+        const scalarList a(state.get<scalarList>(name));
+        const scalarList b(again.get<scalarList>(name));
+        ASSERT_EQ(a.size(), b.size()) << name;
+        label nonzero = 0;
+        forAll(a, i)
+        {
+            EXPECT_TRUE(sameBits(a[i], b[i])) << name << " " << i;
+            nonzero += a[i] != 0;
+        }
+        EXPECT_GT(nonzero, 0) << name;
+    }
 }
 
 

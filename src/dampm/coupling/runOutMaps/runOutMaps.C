@@ -328,8 +328,7 @@ void Foam::runOutMaps::writeRasters(const Time& runTime3D) const
 
 void Foam::runOutMaps::write()
 {
-    // Exactly: dictionary entries keep a value as printed
-    const exactPrecision exact;
+    // (The dictionary is written at exact precision: exactPrecisionIO)
     maps_->saveMaxima(dict_());
 }
 

@@ -12,6 +12,7 @@ License
 #include "terrainRaster.H"
 #include "OSspecific.H"
 #include "mpmTime.H"
+#include "primitiveEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
@@ -217,9 +218,23 @@ void Foam::hazardMaps::writeRasters(const Time& runTime) const
 
 void Foam::hazardMaps::saveMaxima(dictionary& dict) const
 {
+    // The tokens the list's text parses into, N ( v ... ), made directly:
+    // a list given as a value is printed and parsed back, number by number
+    // (2 s a write for the 6.8e6 nodes of hillsideBarrier -full's maps).
+    // The dictionary prints the same text (a zero as the label 0, as
+    // parsed; the others as doubles, at the precision it is written with)
     for (int k = 0; k < nMaps; ++k)
     {
-        dict.set(names[k], scalarList(maxima_[k].begin(), maxima_[k].end()));
+        const std::vector<double>& m = maxima_[k];
+        List<token> tokens(m.size() + 3);
+        tokens[0] = label(m.size());
+        tokens[1] = token::BEGIN_LIST;
+        for (size_t i = 0; i < m.size(); ++i)
+        {
+            tokens[i + 2] = m[i] == 0 ? token(label(0)) : token(m[i]);
+        }
+        tokens.last() = token::END_LIST;
+        dict.set(new primitiveEntry(names[k], std::move(tokens)));
     }
 }
 
