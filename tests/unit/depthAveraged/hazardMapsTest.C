@@ -164,6 +164,9 @@ TEST(hazardMaps, MaximaExportedInMapCoordinatesAsAscAndGeoTiff)
         }
     }
 
+    // Read back from the text (the state is written in ASCII whatever
+    // writeFormat: OpenFOAM's token streams cannot read the lists back from
+    // binary; tests/cases/coupled/layerAtRest restarts a binary 3D stage)
     IStringStream is(made.str());
     const dictionary read(is);
     hazardMaps loaded(grid, *topo, Znodes.data());

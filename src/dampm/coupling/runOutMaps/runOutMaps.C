@@ -205,9 +205,11 @@ Foam::autoPtr<Foam::IOdictionary> Foam::runOutMaps::source
     const word& sourceTime
 )
 {
+    // ASCII whatever writeFormat: OpenFOAM's token streams cannot read the
+    // maxima's lists back from binary (exactAsciiIO)
     autoPtr<IOdictionary> dict
     (
-        new exactPrecisionIO<IOdictionary>
+        new exactAsciiIO<IOdictionary>
         (
             IOobject
             (
@@ -328,7 +330,7 @@ void Foam::runOutMaps::writeRasters(const Time& runTime3D) const
 
 void Foam::runOutMaps::write()
 {
-    // (The dictionary is written at exact precision: exactPrecisionIO)
+    // (The dictionary is written in ASCII at exact precision: exactAsciiIO)
     maps_->saveMaxima(dict_());
 }
 
