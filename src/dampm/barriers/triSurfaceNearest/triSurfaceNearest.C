@@ -141,51 +141,56 @@ Foam::label Foam::triSurfaceNearest::nearestCandidate
 }
 
 
-Foam::label Foam::triSurfaceNearest::candidate
+Foam::triSurfaceNearest::answer Foam::triSurfaceNearest::query
 (
-    const point& p,
-    volumeType& type,
-    pointHit& hit,
-    label& nearType
+    const point& p
 ) const
 {
-    const label leaf = descend(p, type);
-    return leaf >= 0 ? nearestCandidate(leaf, p, hit, nearType) : -1;
+    answer a;
+    const label leaf = descend(p, a.type);
+    a.facei = leaf >= 0 ? nearestCandidate(leaf, p, a.hit, a.nearType) : -1;
+    return a;
 }
 
 
-bool Foam::triSurfaceNearest::side
+Foam::pointIndexHit Foam::triSurfaceNearest::hitOf
 (
     const point& p,
-    const volumeType type,
-    const label facei,
-    const pointHit& hit,
-    const label nearType
+    const answer& a
 ) const
+{
+    return
+        a.facei >= 0
+      ? pointIndexHit(true, a.hit.rawPoint(), a.facei)
+      : tree_.findNearest(p, GREAT);
+}
+
+
+bool Foam::triSurfaceNearest::side(const point& p, const answer& a) const
 {
     // calcInside: a point outside the octree's box is outside; else
     // getVolumeType, whose first type on the way that is not MIXED holds
-    if (!tree_.bb().contains(p) || type == volumeType::UNKNOWN)
+    if (!tree_.bb().contains(p) || a.type == volumeType::UNKNOWN)
     {
         return false;
     }
-    if (type != volumeType::MIXED)
+    if (a.type != volumeType::MIXED)
     {
-        return type == volumeType::INSIDE;
+        return a.type == volumeType::INSIDE;
     }
-    if (facei < 0)
+    if (a.facei < 0)
     {
         return tree_.getVolumeType(p) == volumeType::INSIDE;
     }
     // At a leaf, treeDataPrimitivePatch<triSurface>::getVolumeType: the
     // side of the nearest triangle (triSurfaceTools::surfaceSide, which
     // goes by the face's normal where the nearest point is inside it)
-    if (nearType == triPointRef::NONE)
+    if (a.nearType == triPointRef::NONE)
     {
-        return !(((p - hit.rawPoint()) & surf_.faceNormals()[facei]) > 0);
+        return !(((p - a.hit.rawPoint()) & surf_.faceNormals()[a.facei]) > 0);
     }
     return
-        triSurfaceTools::surfaceSide(surf_, p, facei)
+        triSurfaceTools::surfaceSide(surf_, p, a.facei)
      == triSurfaceTools::INSIDE;
 }
 
@@ -307,24 +312,13 @@ Foam::triSurfaceNearest::triSurfaceNearest
 
 Foam::pointIndexHit Foam::triSurfaceNearest::nearest(const point& p) const
 {
-    volumeType type;
-    pointHit hit;
-    label nearType = -1;
-    const label facei = candidate(p, type, hit, nearType);
-    return
-        facei >= 0
-      ? pointIndexHit(true, hit.rawPoint(), facei)
-      : tree_.findNearest(p, GREAT);
+    return hitOf(p, query(p));
 }
 
 
 bool Foam::triSurfaceNearest::inside(const point& p) const
 {
-    volumeType type;
-    pointHit hit;
-    label nearType = -1;
-    const label facei = candidate(p, type, hit, nearType);
-    return side(p, type, facei, hit, nearType);
+    return side(p, query(p));
 }
 
 
@@ -334,24 +328,15 @@ Foam::pointIndexHit Foam::triSurfaceNearest::nearest
     bool& inside
 ) const
 {
-    volumeType type;
-    pointHit hit;
-    label nearType = -1;
-    const label facei = candidate(p, type, hit, nearType);
-    inside = side(p, type, facei, hit, nearType);
-    return
-        facei >= 0
-      ? pointIndexHit(true, hit.rawPoint(), facei)
-      : tree_.findNearest(p, GREAT);
+    const answer a = query(p);
+    inside = side(p, a);
+    return hitOf(p, a);
 }
 
 
 bool Foam::triSurfaceNearest::fromLists(const point& p) const
 {
-    volumeType type;
-    pointHit hit;
-    label nearType = -1;
-    return candidate(p, type, hit, nearType) >= 0;
+    return query(p).facei >= 0;
 }
 
 
