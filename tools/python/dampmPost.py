@@ -204,6 +204,25 @@ def latest_time(case):
     return times(case)[-1]
 
 
+def files_below(d):
+    """The files below directory d, as paths relative to it, sorted."""
+    return sorted(os.path.relpath(os.path.join(r, f), d) for r, _, fs in os.walk(d) for f in fs)
+
+
+def differing_files(a, b, files=None):
+    """The files (paths relative to a and b; by default every file below a)
+    that are not byte for byte the same in directory b, or are missing there."""
+    def content(path):
+        try:
+            with open(path, "rb") as f:
+                return f.read()
+        except OSError:
+            return None
+    return [f for f in (files_below(a) if files is None else files)
+            if content(os.path.join(b, f)) is None
+            or content(os.path.join(a, f)) != content(os.path.join(b, f))]
+
+
 def structure_points(case, name):
     """Node positions (N x 3) of a flexible barrier at its last write: the
     legacy VTK file listed last in VTK/<name>.vtk.series."""

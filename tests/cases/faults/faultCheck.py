@@ -197,9 +197,7 @@ def waitForRows(proc, case, solver, n, timeout=120):
 
 def sameFiles(caseA, caseB, time, files, what):
     """The files of a time directory byte for byte the same in two cases."""
-    differ = [f for f in files
-              if open(os.path.join(caseA, time, f), "rb").read()
-              != open(os.path.join(caseB, time, f), "rb").read()]
+    differ = dp.differing_files(os.path.join(caseA, time), os.path.join(caseB, time), files)
     check(not differ, "%s: %s/%s byte for byte those of %s (differ: %s)"
           % (what, caseB, time, caseA, differ or "none"))
 

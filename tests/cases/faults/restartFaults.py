@@ -106,11 +106,6 @@ def formats(c, ref, times):
     return formatVariant(c, ref, times, "asciiCloud", {"cloudFormat": "ascii"}, "ascii")
 
 
-def filesIn(d):
-    """The paths of the files below directory d."""
-    return [os.path.join(r, f) for r, _, fs in os.walk(d) for f in fs]
-
-
 def foreground(c, ref, times):
     """The reference's time directories are written by the background
     writer (writeInBackground's default); written by the solver's own thread
@@ -121,8 +116,7 @@ def foreground(c, ref, times):
     fc.checkAccepted("foreground", status, out)
     check(fc.timeDirs(run) == times, "foreground: the time directories %s" % times)
     for t in times:
-        listed = [sorted(os.path.relpath(f, os.path.join(case, t)) for f in filesIn(os.path.join(case, t)))
-                  for case in (ref, run)]
+        listed = [fc.dp.files_below(os.path.join(case, t)) for case in (ref, run)]
         check(listed[0] == listed[1], "foreground: the files of %s are the background's" % t)
         fc.sameFiles(ref, run, t, listed[0], "foreground")
         links = [[os.stat(os.path.join(case, t, f)).st_nlink for f in listed[0]] for case in (ref, run)]
@@ -248,7 +242,7 @@ def fullDisk(c, ref, times):
     subprocess.run(["umount", work], capture_output=True)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    size = lambda d: sum(os.path.getsize(f) for f in filesIn(d))
+    size = lambda d: sum(os.path.getsize(os.path.join(d, f)) for f in fc.dp.files_below(d))
     need = size(os.path.join(ref, "constant")) + size(os.path.join(ref, "system")) \
         + size(os.path.join(ref, times[0])) + size(os.path.join(ref, times[1]))
     room = need + size(os.path.join(ref, times[2])) // 2
@@ -260,7 +254,8 @@ def fullDisk(c, ref, times):
     limit = None
     if not mounted:
         # Files may not grow beyond the biggest file of the second write
-        biggest = max(os.path.getsize(f) for f in filesIn(os.path.join(ref, times[2])))
+        second = os.path.join(ref, times[2])
+        biggest = max(os.path.getsize(os.path.join(second, f)) for f in fc.dp.files_below(second))
         limit = lambda: resource.setrlimit(resource.RLIMIT_FSIZE, (biggest - 1, biggest - 1))
     if mounted:
         # The whole output on the full disk, as runApplication writes it:
