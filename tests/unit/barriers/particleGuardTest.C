@@ -31,7 +31,8 @@ Description
       lying just above are not tested, and of 20,000 random moves every
       entry the exact test finds is stopped, the others left alone; on
       the four parts of a decomposed grid, the same stops bit for bit and
-      the same screen;
+      the same screen; a raster terrain's exact test (one evaluation of
+      the raster a point) is the topography's formula bit for bit;
     - triSurface (the box of surfaceCase.H): a particle entering through
       the top face is put back on it and loses its velocity into it (slip;
       Coulomb with mu = 0.1 halves its 0.2 m/s along the face against
@@ -412,6 +413,81 @@ TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
     EXPECT_EQ(testedLyingAt(probe, terrain, 0.01), 0);
     EXPECT_EQ(testedLyingAt(probe, terrain, -0.07), 400);
     EXPECT_LT(randomEntries(probe, terrain, 23).tested, 20000);
+}
+
+
+// A raster terrain's deeperThan (one evaluation of the raster a point)
+// answers as the topography's Z() and gradient() do, bit for bit: deeper
+// than d where z - Z < -d and (z - Z)/sqrt(1 + |grad Z|^2) < -d. On a
+// steep slope many points are deeper than d vertically and not along the
+// normal, and points within 1e-12 m of either threshold are tested
+TEST(particleGuard, RasterTerrainDeeperThanIsTheTopographysFormula)
+{
+    const fileName dir(scratchDir("particleGuardDeeper"));
+    writeRaster
+    (
+        dir, "steep.asc",
+        [](const double x, const double y)
+        {
+            return 0.2 + 1.5*x - 0.8*y + 0.05*std::sin(13*x)*std::cos(9*y);
+        }
+    );
+    const autoPtr<barrierGeometry> geometry
+    (
+        readGeometry
+        (
+            "type terrain; topography raster; rasterCoeffs { file steep.asc;"
+            " offset (0 0); }",
+            dir
+        )
+    );
+    const topographyModel& Z =
+        dynamic_cast<const barrierGeometries::terrainGeometry&>(*geometry)
+       .topography();
+    ASSERT_TRUE(Z.raster());
+
+    constexpr label n = 40000;
+    const scalar depth = 0.02;
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    pointField points(n);
+    boolList expected(n);
+    label verticalOnly = 0, deeper = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar x = 1.05*u(rng) - 0.04, y = 1.25*u(rng) - 0.04;
+        const scalar Z0 = Z.Z(x, y);
+        const vector2D grad = Z.gradient(x, y);
+        const scalar norm = std::sqrt(1 + sqr(grad.x()) + sqr(grad.y()));
+        // Below the surface by up to twice the depth along the normal, a
+        // quarter of them within 1e-12 m of a threshold
+        scalar dz = -2*depth*norm*u(rng);
+        if (i % 4 == 1)
+        {
+            dz = -depth*norm + 1e-12*(2*u(rng) - 1);
+        }
+        else if (i % 4 == 2)
+        {
+            dz = -depth + 1e-12*(2*u(rng) - 1);
+        }
+        points[i] = point(x, y, Z0 + dz);
+        const scalar vertical = points[i].z() - Z0;
+        expected[i] = vertical < -depth && vertical/norm < -depth;
+        verticalOnly += vertical < -depth && !expected[i];
+        deeper += expected[i];
+    }
+    EXPECT_GT(verticalOnly, n/20);
+    EXPECT_GT(deeper, n/5);
+
+    boolList in;
+    geometry->deeperThan(points, depth, in);
+    ASSERT_EQ(in.size(), n);
+    label differing = 0;
+    forAll(points, i)
+    {
+        differing += in[i] != expected[i];
+    }
+    EXPECT_EQ(differing, 0);
 }
 
 
