@@ -19,15 +19,22 @@ Description
       any step, and without viscosity the yield stress itself;
     - the plug sets no viscous step (the elastic one holds), while the
       purely viscous stress (shearModulus 0) keeps its regularised limit;
-    - columns thinner than hMin carry no stress.
+    - columns thinner than hMin carry no stress;
+    - many columns (thin and thick, below and above yield, 1 and 2
+      threads) get what the one-column form, branch by branch, gives, bit
+      for bit.
 
 \*---------------------------------------------------------------------------*/
 
 #include "rheologyModel.H"
 #include "IStringStream.H"
+#include "columnArrays.H"
+#include "sameBits.H"
 #include <gtest/gtest.h>
 #include <array>
 #include <cmath>
+#include <random>
+#include <omp.h>
 
 using namespace Foam;
 
@@ -218,6 +225,107 @@ TEST(BinghamElastoViscoplastic, ThinColumnsCarryNoStress)
     for (int k = 0; k < 3; ++k)
     {
         EXPECT_EQ(c.sigma[k], 0) << k;
+    }
+}
+
+
+// The columns' loop runs every column through the same operations (a
+// vector loop): each column's stress is the one-column form's, branch by
+// branch (spun old stress plus 2 G D dt; at or below yield kept, above it
+// scaled to tauY plus the kept share of the excess; thin: zero), bit for
+// bit, with and without viscosity, on 1 and 2 threads
+TEST(BinghamElastoViscoplastic, ManyColumnsAreTheOneColumnFormBitForBit)
+{
+    const double dt = 0.003;
+    for (const double viscosity : {mu, 0.0})
+    {
+        autoPtr<rheologyModel> evp
+        (
+            bingham
+            (
+                "mu " + std::to_string(viscosity)
+              + "; tauY 2000; shearModulus 19600;"
+            )
+        );
+        constexpr int n = 10007;
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> u(-1, 1);
+        std::vector<double> h(n), ones(n, 1.0);
+        for (int i = 0; i < n; ++i)
+        {
+            h[i] = i % 5 == 0 ? 0.5e-4 : 0.2 + u(rng);
+        }
+        columnArrays cols(h, ones, ones);
+        for (int i = 0; i < n; ++i)
+        {
+            for (int k = 0; k < 4; ++k)
+            {
+                cols.C[k][i] = i % 7 == 0 ? 0 : 3*u(rng);
+            }
+            for (int k = 0; k < 3; ++k)
+            {
+                cols.sigma[k][i] = i % 7 == 0 ? 0 : 1.5*tauY*u(rng);
+            }
+        }
+
+        // The one-column form
+        const double keep =
+            viscosity > 0 ? viscosity/(viscosity + G*dt) : 0;
+        const double Gdt = G*dt;
+        std::vector<double> expected[3];
+        int nYield = 0, nBelow = 0;
+        for (int i = 0; i < n; ++i)
+        {
+            double sxx = 0, sxy = 0, syy = 0;
+            if (cols.h[i] >= cols.hMin)
+            {
+                const double wdt = 0.5*(cols.C[2][i] - cols.C[1][i])*dt;
+                const double a = cols.sigma[0][i];
+                const double b = cols.sigma[1][i];
+                const double c = cols.sigma[2][i];
+                sxx = (a - 2*wdt*b) + 2*Gdt*cols.C[0][i];
+                sxy = (b + wdt*(a - c)) + Gdt*(cols.C[1][i] + cols.C[2][i]);
+                syy = (c + 2*wdt*b) + 2*Gdt*cols.C[3][i];
+                const double tau =
+                    std::sqrt(0.5*(sxx*sxx + 2*sxy*sxy + syy*syy));
+                if (tau > tauY)
+                {
+                    const double scale = (tauY + (tau - tauY)*keep)/tau;
+                    sxx *= scale;
+                    sxy *= scale;
+                    syy *= scale;
+                    ++nYield;
+                }
+                else
+                {
+                    ++nBelow;
+                }
+            }
+            expected[0].push_back(sxx);
+            expected[1].push_back(sxy);
+            expected[2].push_back(syy);
+        }
+        EXPECT_GT(nYield, n/5);
+        EXPECT_GT(nBelow, n/5);
+
+        for (const int threads : {1, 2})
+        {
+            columnArrays run(cols);
+            const int before = omp_get_max_threads();
+            omp_set_num_threads(threads);
+            evp->stress(run.view(), dt);
+            omp_set_num_threads(before);
+            int differing = 0;
+            for (int i = 0; i < n; ++i)
+            {
+                for (int k = 0; k < 3; ++k)
+                {
+                    differing += !sameBits(run.sigma[k][i], expected[k][i]);
+                }
+            }
+            EXPECT_EQ(differing, 0)
+                << "mu " << viscosity << ", " << threads << " threads";
+        }
     }
 }
 
