@@ -58,6 +58,7 @@ Description
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <random>
 
 using namespace Foam;
@@ -420,7 +421,8 @@ TEST(particleGuard, RasterTerrainScreenedByColumnsStopsEveryEntry)
 // answers as the topography's Z() and gradient() do, bit for bit: deeper
 // than d where z - Z < -d and (z - Z)/sqrt(1 + |grad Z|^2) < -d. On a
 // steep slope many points are deeper than d vertically and not along the
-// normal, and points within 1e-12 m of either threshold are tested
+// normal; points within 1e-12 m of either threshold, beyond each side of
+// the raster and with coordinates that are not finite are tested
 TEST(particleGuard, RasterTerrainDeeperThanIsTheTopographysFormula)
 {
     const fileName dir(scratchDir("particleGuardDeeper"));
@@ -479,9 +481,33 @@ TEST(particleGuard, RasterTerrainDeeperThanIsTheTopographysFormula)
     EXPECT_GT(verticalOnly, n/20);
     EXPECT_GT(deeper, n/5);
 
+    // Beyond every side of the raster (clamped), and not finite
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    const scalar inf = std::numeric_limits<scalar>::infinity();
+    for
+    (
+        const point& x
+      : {
+            point(-0.5, 0.6, 0), point(1.7, 0.6, 0), point(0.5, -0.4, 0),
+            point(0.5, 1.9, 0), point(2, 2, 0), point(nan, 0.6, 0),
+            point(0.5, inf, 0), point(-inf, 0.6, 0), point(0.5, 0.6, nan)
+        }
+    )
+    {
+        for (const scalar dz : {-0.5, -0.01, 0.5})
+        {
+            const scalar Z0 = Z.Z(x.x(), x.y());
+            const vector2D grad = Z.gradient(x.x(), x.y());
+            const scalar norm = std::sqrt(1 + sqr(grad.x()) + sqr(grad.y()));
+            points.append(point(x.x(), x.y(), x.z() + Z0 + dz));
+            const scalar vertical = points.last().z() - Z0;
+            expected.append(vertical < -depth && vertical/norm < -depth);
+        }
+    }
+
     boolList in;
     geometry->deeperThan(points, depth, in);
-    ASSERT_EQ(in.size(), n);
+    ASSERT_EQ(in.size(), points.size());
     label differing = 0;
     forAll(points, i)
     {

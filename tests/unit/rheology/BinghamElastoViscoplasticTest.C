@@ -30,11 +30,11 @@ Description
 #include "IStringStream.H"
 #include "columnArrays.H"
 #include "sameBits.H"
+#include "threadCount.H"
 #include <gtest/gtest.h>
 #include <array>
 #include <cmath>
 #include <random>
-#include <omp.h>
 
 using namespace Foam;
 
@@ -233,7 +233,8 @@ TEST(BinghamElastoViscoplastic, ThinColumnsCarryNoStress)
 // vector loop): each column's stress is the one-column form's, branch by
 // branch (spun old stress plus 2 G D dt; at or below yield kept, above it
 // scaled to tauY plus the kept share of the excess; thin: zero), bit for
-// bit, with and without viscosity, on 1 and 2 threads
+// bit, with and without viscosity, some columns at the yield stress
+// exactly, on 1 and 2 threads
 TEST(BinghamElastoViscoplastic, ManyColumnsAreTheOneColumnFormBitForBit)
 {
     const double dt = 0.003;
@@ -265,6 +266,16 @@ TEST(BinghamElastoViscoplastic, ManyColumnsAreTheOneColumnFormBitForBit)
             for (int k = 0; k < 3; ++k)
             {
                 cols.sigma[k][i] = i % 7 == 0 ? 0 : 1.5*tauY*u(rng);
+            }
+            // At the yield stress exactly: |sigma| = |sigma_xy| = tauY
+            if (i % 11 == 3)
+            {
+                for (int k = 0; k < 4; ++k)
+                {
+                    cols.C[k][i] = 0;
+                }
+                cols.sigma[0][i] = cols.sigma[2][i] = 0;
+                cols.sigma[1][i] = tauY;
             }
         }
 
@@ -311,10 +322,10 @@ TEST(BinghamElastoViscoplastic, ManyColumnsAreTheOneColumnFormBitForBit)
         for (const int threads : {1, 2})
         {
             columnArrays run(cols);
-            const int before = omp_get_max_threads();
-            omp_set_num_threads(threads);
-            evp->stress(run.view(), dt);
-            omp_set_num_threads(before);
+            {
+                const threadCount guard(threads);
+                evp->stress(run.view(), dt);
+            }
             int differing = 0;
             for (int i = 0; i < n; ++i)
             {

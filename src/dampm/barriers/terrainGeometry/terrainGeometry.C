@@ -60,18 +60,25 @@ Foam::barrierGeometries::terrainGeometry::terrainGeometry
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-inline Foam::scalar Foam::barrierGeometries::terrainGeometry::surface
+inline void Foam::barrierGeometries::terrainGeometry::slope
 (
+    const terrainRaster* raster,
     const scalar x,
     const scalar y,
+    scalar& Z,
     scalar& Zx,
     scalar& Zy
 ) const
 {
+    if (raster)
+    {
+        raster->evaluate(x, y, Z, Zx, Zy);
+        return;
+    }
     const vector2D gradZ = topography_->gradient(x, y);
     Zx = gradZ.x();
     Zy = gradZ.y();
-    return topography_->Z(x, y);
+    Z = topography_->Z(x, y);
 }
 
 
@@ -87,12 +94,13 @@ void Foam::barrierGeometries::terrainGeometry::distance
 
     // Each point its own (Z is pure): on several threads when not called
     // from a parallel region already
+    const terrainRaster* const raster = topography_->raster();
     const label n = points.size();
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        scalar Zx, Zy;
-        const scalar Z0 = surface(points[i].x(), points[i].y(), Zx, Zy);
+        scalar Z0, Zx, Zy;
+        slope(raster, points[i].x(), points[i].y(), Z0, Zx, Zy);
         const scalar norm = std::sqrt(1 + Zx*Zx + Zy*Zy);
         phi[i] = (points[i].z() - Z0)/norm;
         normal[i] = vector(-Zx, -Zy, 1)/norm;
@@ -108,37 +116,33 @@ void Foam::barrierGeometries::terrainGeometry::deeperThan
 ) const
 {
     in.setSize(points.size());
+
+    // Z first, and the gradient only below the depth (a point less deep
+    // vertically is less deep along the normal); a raster gives both from
+    // one evaluation (the guard's bisection tests each entered particle 30
+    // times)
+    const terrainRaster* const raster = topography_->raster();
     const label n = points.size();
-
-    // A raster gives Z and its gradient from one evaluation: the numbers
-    // of the topography's Z() and gradient(), for a third of the work at a
-    // point under the surface (the guard's bisection tests each entered
-    // particle 30 times)
-    if (const terrainRaster* raster = topography_->raster())
-    {
-        #pragma omp parallel for schedule(static)
-        for (label i = 0; i < n; ++i)
-        {
-            scalar Z0, Zx, Zy;
-            raster->evaluate(points[i].x(), points[i].y(), Z0, Zx, Zy);
-            const scalar dz = points[i].z() - Z0;
-            in[i] = dz < -depth && dz/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
-        }
-        return;
-    }
-
-    const topographyModel& Z = *topography_;
     #pragma omp parallel for schedule(static)
     for (label i = 0; i < n; ++i)
     {
         const scalar x = points[i].x(), y = points[i].y();
-        in[i] = points[i].z() - Z.Z(x, y) < -depth;
-        if (in[i])
+        scalar Z0, Zx = 0, Zy = 0;
+        if (raster)
         {
-            scalar Zx, Zy;
-            const scalar Z0 = surface(x, y, Zx, Zy);
-            in[i] = (points[i].z() - Z0)/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
+            slope(raster, x, y, Z0, Zx, Zy);
         }
+        else
+        {
+            Z0 = topography_->Z(x, y);
+        }
+        const scalar dz = points[i].z() - Z0;
+        const bool deep = dz < -depth;
+        if (deep && !raster)
+        {
+            slope(raster, x, y, Z0, Zx, Zy);
+        }
+        in[i] = deep && dz/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
     }
 }
 
