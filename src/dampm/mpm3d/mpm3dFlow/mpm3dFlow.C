@@ -425,6 +425,26 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
         x[d] = particles_.component(particleArrays::X + d);
     }
     const double* m = particles_.component(particleArrays::M);
+
+    // Most steps no particle has left the domain: a vector loop counts
+    // those beyond it first (the same comparisons), and only when there
+    // are some are they put back or flagged
+    label nBeyond = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const double* const xd = x[d];
+        const double lo = g.origin[d], hi = g.domainUpper(d);
+        #pragma omp parallel for simd schedule(static) reduction(+:nBeyond)
+        for (label i = 0; i < n; ++i)
+        {
+            nBeyond += (xd[i] < lo) | (xd[i] > hi);
+        }
+    }
+    if (!nBeyond)
+    {
+        return 0;
+    }
+
     flagged_.assign(n, 0);
     label nOut = 0;
 
