@@ -218,9 +218,12 @@ def differing_files(a, b, files=None):
                 return f.read()
         except OSError:
             return None
-    return [f for f in (files_below(a) if files is None else files)
-            if content(os.path.join(b, f)) is None
-            or content(os.path.join(a, f)) != content(os.path.join(b, f))]
+    differing = []
+    for f in files_below(a) if files is None else files:
+        other = content(os.path.join(b, f))
+        if other is None or other != content(os.path.join(a, f)):
+            differing.append(f)
+    return differing
 
 
 def structure_points(case, name):

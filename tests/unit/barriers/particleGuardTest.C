@@ -53,6 +53,7 @@ Description
 #include "scratchDir.H"
 #include "terrainGeometry.H"
 #include "OSspecific.H"
+#include "DynamicField.H"
 #include <gtest/gtest.h>
 #include <chrono>
 #include <cmath>
@@ -448,38 +449,34 @@ TEST(particleGuard, RasterTerrainDeeperThanIsTheTopographysFormula)
        .topography();
     ASSERT_TRUE(Z.raster());
 
+    // The topography's sqrt(1 + |grad Z|^2)
+    const auto norm = [&](const scalar x, const scalar y)
+    {
+        const vector2D grad = Z.gradient(x, y);
+        return std::sqrt(1 + sqr(grad.x()) + sqr(grad.y()));
+    };
+
     constexpr label n = 40000;
     const scalar depth = 0.02;
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(0, 1);
-    pointField points(n);
-    boolList expected(n);
-    label verticalOnly = 0, deeper = 0;
+    DynamicField<point> points(n);
     for (label i = 0; i < n; ++i)
     {
         const scalar x = 1.05*u(rng) - 0.04, y = 1.25*u(rng) - 0.04;
-        const scalar Z0 = Z.Z(x, y);
-        const vector2D grad = Z.gradient(x, y);
-        const scalar norm = std::sqrt(1 + sqr(grad.x()) + sqr(grad.y()));
         // Below the surface by up to twice the depth along the normal, a
         // quarter of them within 1e-12 m of a threshold
-        scalar dz = -2*depth*norm*u(rng);
+        scalar dz = -2*depth*norm(x, y)*u(rng);
         if (i % 4 == 1)
         {
-            dz = -depth*norm + 1e-12*(2*u(rng) - 1);
+            dz = -depth*norm(x, y) + 1e-12*(2*u(rng) - 1);
         }
         else if (i % 4 == 2)
         {
             dz = -depth + 1e-12*(2*u(rng) - 1);
         }
-        points[i] = point(x, y, Z0 + dz);
-        const scalar vertical = points[i].z() - Z0;
-        expected[i] = vertical < -depth && vertical/norm < -depth;
-        verticalOnly += vertical < -depth && !expected[i];
-        deeper += expected[i];
+        points.append(point(x, y, Z.Z(x, y) + dz));
     }
-    EXPECT_GT(verticalOnly, n/20);
-    EXPECT_GT(deeper, n/5);
 
     // Beyond every side of the raster (clamped), and not finite
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
@@ -496,14 +493,23 @@ TEST(particleGuard, RasterTerrainDeeperThanIsTheTopographysFormula)
     {
         for (const scalar dz : {-0.5, -0.01, 0.5})
         {
-            const scalar Z0 = Z.Z(x.x(), x.y());
-            const vector2D grad = Z.gradient(x.x(), x.y());
-            const scalar norm = std::sqrt(1 + sqr(grad.x()) + sqr(grad.y()));
-            points.append(point(x.x(), x.y(), x.z() + Z0 + dz));
-            const scalar vertical = points.last().z() - Z0;
-            expected.append(vertical < -depth && vertical/norm < -depth);
+            points.append(point(x.x(), x.y(), x.z() + Z.Z(x.x(), x.y()) + dz));
         }
     }
+
+    // The formula's answers
+    boolList expected(points.size());
+    label verticalOnly = 0, deeper = 0;
+    forAll(points, i)
+    {
+        const point& p = points[i];
+        const scalar vertical = p.z() - Z.Z(p.x(), p.y());
+        expected[i] = vertical < -depth && vertical/norm(p.x(), p.y()) < -depth;
+        verticalOnly += vertical < -depth && !expected[i];
+        deeper += expected[i];
+    }
+    EXPECT_GT(verticalOnly, n/20);
+    EXPECT_GT(deeper, n/5);
 
     boolList in;
     geometry->deeperThan(points, depth, in);
