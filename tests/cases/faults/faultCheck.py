@@ -191,7 +191,8 @@ def waitForRows(proc, case, solver, n, timeout=120):
     while time.time() - t0 < timeout and proc.poll() is None:
         if len(summaryRows(case, solver, None)) >= n:
             return True
-        time.sleep(0.02)
+        # Short: a test case's whole run can take tens of milliseconds
+        time.sleep(0.002)
     return False
 
 
