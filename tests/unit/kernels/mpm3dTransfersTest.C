@@ -553,6 +553,76 @@ TEST(mpm3dTransfers, VolumeChangeFourAtATimeIsEachParticlesBitForBit)
 }
 
 
+// The smoothing scatter (scatterScalars: a row's nodes two at a time) adds
+// to every node of every stencil w_a (w_b w_c v_k), the scalar form's
+// product, bit for bit: particles one after the other onto random node
+// values, two fields and one, each kernel width (2 nodes a row and 3)
+template<class Kernel, int K>
+void checkSmoothingScatter(const Kernel& kernel)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(29);
+    std::uniform_real_distribution<double> u(-1, 1);
+    testParticles tp(g, 2, &gen);
+    std::vector<double> q[K], ref[K];
+    double* qs[K];
+    for (int k = 0; k < K; ++k)
+    {
+        q[k].resize(g.nNodes());
+        for (double& v : q[k])
+        {
+            v = u(gen);
+        }
+        ref[k] = q[k];
+        qs[k] = q[k].data();
+    }
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        const stencil<3, Kernel> s
+        (
+            g, kernel, tp.x[0][i], tp.x[1][i], tp.x[2][i]
+        );
+        double v[K];
+        for (int k = 0; k < K; ++k)
+        {
+            v[k] = u(gen);
+        }
+        scatterScalars(s, v, qs);
+        for (int c = 0; c < Kernel::width; ++c)
+        {
+            for (int b = 0; b < Kernel::width; ++b)
+            {
+                const double wbc = s.w[1][b]*s.w[2][c];
+                for (int a = 0; a < Kernel::width; ++a)
+                {
+                    const gridIndex n = s.base + a + b*s.sy + c*s.sz;
+                    for (int k = 0; k < K; ++k)
+                    {
+                        ref[k][n] += s.w[0][a]*(wbc*v[k]);
+                    }
+                }
+            }
+        }
+    }
+    for (int k = 0; k < K; ++k)
+    {
+        for (gridIndex n = 0; n < g.nNodes(); ++n)
+        {
+            ASSERT_TRUE(sameBits(q[k][n], ref[k][n])) << k << " " << n;
+        }
+    }
+}
+
+
+TEST(mpm3dTransfers, SmoothingScatterIsEachNodesProductBitForBit)
+{
+    checkSmoothingScatter<linearKernel, 2>(linearKernel());
+    checkSmoothingScatter<kernel3, 2>(kernel3());
+    checkSmoothingScatter<kernel3, 1>(kernel3());
+    checkSmoothingScatter<GIMPKernel, 1>(GIMPKernel(1.0/6));
+}
+
+
 // Timing (label benchmark): the three particle passes of a step with
 // volumetric smoothing (pressure scatter, P2G scatter, G2P gather fused
 // with the volume change's scatter), per particle, on particles and nodes
