@@ -553,8 +553,9 @@ TEST(mpm3dTransfers, VolumeChangeFourAtATimeIsEachParticlesBitForBit)
 }
 
 
-// The smoothing scatter (scatterScalars: a row's nodes two at a time) adds
-// to every node of every stencil w_a (w_b w_c v_k), the scalar form's
+// The smoothing scatters (scatterScalars: a row's nodes two at a time;
+// volumePressureToPairs: the volume and pressure sums interleaved) add to
+// every node of every stencil w_a (w_b w_c v_k), the scalar form's
 // product, bit for bit: particles one after the other onto random node
 // values, two fields and one, each kernel width (2 nodes a row and 3)
 template<class Kernel, int K>
@@ -614,8 +615,65 @@ void checkSmoothingScatter(const Kernel& kernel)
 }
 
 
+// v = (V, -V tr(sigma)/3) into the pairs of volPV
+template<class Kernel>
+void checkVolumePressurePairs(const Kernel& kernel)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(31);
+    std::uniform_real_distribution<double> u(-1, 1);
+    testParticles tp(g, 2, &gen);
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        tp.V[i] *= 1 + 0.5*u(gen);
+        for (int c = 0; c < 6; ++c)
+        {
+            tp.sigma[c][i] = 1e3*u(gen);
+        }
+    }
+    const mpm3dParticles p = tp.view();
+    std::vector<double> volPV(mpm3dGrid::volPVWidth*g.nNodes());
+    for (double& v : volPV)
+    {
+        v = u(gen);
+    }
+    std::vector<double> ref(volPV);
+    for (gridIndex i = 0; i < p.n; ++i)
+    {
+        const stencil<3, Kernel> s(g, kernel, p.x[0][i], p.x[1][i], p.x[2][i]);
+        volumePressureToPairs(s, p, i, volPV.data());
+        const double v[2] =
+        {
+            p.V[i], -p.V[i]*(p.sigma[0][i] + p.sigma[3][i] + p.sigma[5][i])/3
+        };
+        for (int c = 0; c < Kernel::width; ++c)
+        {
+            for (int b = 0; b < Kernel::width; ++b)
+            {
+                const double wbc = s.w[1][b]*s.w[2][c];
+                for (int a = 0; a < Kernel::width; ++a)
+                {
+                    const gridIndex n = s.base + a + b*s.sy + c*s.sz;
+                    for (int k = 0; k < 2; ++k)
+                    {
+                        ref[2*n + k] += s.w[0][a]*(wbc*v[k]);
+                    }
+                }
+            }
+        }
+    }
+    for (size_t j = 0; j < ref.size(); ++j)
+    {
+        ASSERT_TRUE(sameBits(volPV[j], ref[j])) << j;
+    }
+}
+
+
 TEST(mpm3dTransfers, SmoothingScatterIsEachNodesProductBitForBit)
 {
+    checkVolumePressurePairs(linearKernel());
+    checkVolumePressurePairs(kernel3());
+    checkVolumePressurePairs(GIMPKernel(1.0/6));
     checkSmoothingScatter<linearKernel, 2>(linearKernel());
     checkSmoothingScatter<kernel3, 2>(kernel3());
     checkSmoothingScatter<kernel3, 1>(kernel3());
