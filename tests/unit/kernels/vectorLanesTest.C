@@ -64,6 +64,8 @@ struct laneCase
     std::vector<double> h, a, kappa, Zb, gzx, gzy, gZx, gZy;
     std::vector<double> sigma[3];
     std::vector<double> s, k1, k2;
+    //- The nodes' height, surface and bed elevation
+    std::vector<double> hN, zetaN, ZN;
     shallowGrid grid;
 
     laneCase()
@@ -112,11 +114,21 @@ struct laneCase
         }
 
         grid.resize(g.nNodes());
+        hN.resize(g.nNodes());
+        zetaN.resize(g.nNodes());
+        ZN.resize(g.nNodes());
         for (label j = 0; j < g.nNodes(); ++j)
         {
-            grid.h[j] = u(gen);
-            grid.zeta[j] = 2 + v(gen);
-            grid.Z[j] = v(gen);
+            hN[j] = u(gen);
+            zetaN[j] = 2 + v(gen);
+            ZN[j] = v(gen);
+            grid.h[j] = hN[j];
+            grid.Z[j] = ZN[j];
+            double* const surface =
+                grid.surface.data() + shallowGrid::nSurface*j;
+            surface[shallowGrid::HEIGHT] = hN[j];
+            surface[shallowGrid::ZETA] = zetaN[j];
+            surface[shallowGrid::ELEVATION] = ZN[j];
             grid.vx[j] = v(gen);
             grid.vy[j] = v(gen);
         }
@@ -323,14 +335,14 @@ void checkSurfaceGather(const Kernel& kernel)
                 const double*
             )
             {
-                h += N*t.grid.h[j];
-                gzx += t.grid.zeta[j]*gN[0];
-                gzy += t.grid.zeta[j]*gN[1];
+                h += N*t.hN[j];
+                gzx += t.zetaN[j]*gN[0];
+                gzy += t.zetaN[j]*gN[1];
                 if (Terrain)
                 {
-                    Zb += N*t.grid.Z[j];
-                    gZx += t.grid.Z[j]*gN[0];
-                    gZy += t.grid.Z[j]*gN[1];
+                    Zb += N*t.ZN[j];
+                    gZx += t.ZN[j]*gN[0];
+                    gZy += t.ZN[j]*gN[1];
                 }
             }
         );
