@@ -740,7 +740,8 @@ struct motionArrays
 };
 
 
-//- gridToColumns against gridToParticlesVelocity then columnAdvance one
+//- gridToColumns (the node velocities as pairs) against
+//  gridToParticlesVelocity (as two arrays) then columnAdvance one
 //  column at a time, with a large step (columns leave through the open
 //  side and through the walls) and splitting on
 template<class Kernel>
@@ -755,11 +756,19 @@ void checkGridToColumns(const Kernel& kernel)
     rule.hSplit = 0.01;
     const double dt = 0.3;
     const double* const vel[2] = {t.grid.vx.data(), t.grid.vy.data()};
+    // The same velocities as S8's pairs
+    std::vector<double> pairs(2*t.g.nNodes());
+    for (label n = 0; n < t.g.nNodes(); ++n)
+    {
+        pairs[2*n] = vel[0][n];
+        pairs[2*n + 1] = vel[1][n];
+    }
 
     const columnMotion qt = mt.of(t), qr = mr.of(r);
     const label nRemoved = gridToColumns
     (
-        t.g, kernel, vel, columnAdvance(t.g, sides, dt, true, rule, qt)
+        t.g, kernel, pairs.data(),
+        columnAdvance(t.g, sides, dt, true, rule, qt)
     );
 
     gridToParticlesVelocity<2>

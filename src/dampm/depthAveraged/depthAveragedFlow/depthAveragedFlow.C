@@ -788,14 +788,14 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     (
         g, sides_, dt, splitting_.active(), splitting_.rule(), motion
     );
-    const double* vel[2] = {nodes_.vx.data(), nodes_.vy.data()};
     label nRemoved = 0;
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
-            nRemoved = gridToColumns(g, kernel, vel, advance);
+            nRemoved =
+                gridToColumns(g, kernel, nodes_.velocity.data(), advance);
         }
     );
     const double* m = particles_.component(particleArrays::M);
