@@ -158,6 +158,19 @@ void p2g
     );
 }
 
+// Random stresses of the particles, each component in [-scale, scale]
+void randomStresses(testParticles& tp, std::mt19937& gen, const double scale)
+{
+    std::uniform_real_distribution<double> u(-scale, scale);
+    for (size_t i = 0; i < tp.m.size(); ++i)
+    {
+        for (int c = 0; c < 6; ++c)
+        {
+            tp.sigma[c][i] = u(gen);
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -626,11 +639,8 @@ void checkVolumePressurePairs(const Kernel& kernel)
     for (size_t i = 0; i < tp.m.size(); ++i)
     {
         tp.V[i] *= 1 + 0.5*u(gen);
-        for (int c = 0; c < 6; ++c)
-        {
-            tp.sigma[c][i] = 1e3*u(gen);
-        }
     }
+    randomStresses(tp, gen, 1e3);
     const mpm3dParticles p = tp.view();
     std::vector<double> volPV(mpm3dGrid::volPVWidth*g.nNodes());
     for (double& v : volPV)
@@ -669,6 +679,38 @@ void checkVolumePressurePairs(const Kernel& kernel)
 }
 
 
+// The volume and pressure scatter on a grid that has had a step: with the
+// node state zeroed (zeroNodes3D) in between, the nodes' vol and pV are
+// those of a fresh grid, bit for bit
+TEST(mpm3dTransfers, PressureScatterStartsFromZeroEveryStep)
+{
+    const gridGeometry g = box();
+    std::mt19937 gen(37);
+    testParticles tp(g, 2, &gen);
+    randomStresses(tp, gen, 1e3);
+    const mpm3dParticles p = tp.view();
+    const scatterSchedule schedule(g);
+    const nodeBox all = g.allNodes();
+    mpm3dGrid fresh, used;
+    fresh.resize(g.nNodes());
+    used.resize(g.nNodes());
+    for (int step = 0; step < 2; ++step)
+    {
+        zeroNodes3D(g, all, used);
+        pressureToGrid3D
+        (
+            g, schedule, kernel3(), all, tp.binStart.data(), p, used
+        );
+    }
+    pressureToGrid3D(g, schedule, kernel3(), all, tp.binStart.data(), p, fresh);
+    for (gridIndex n = 0; n < g.nNodes(); ++n)
+    {
+        ASSERT_TRUE(sameBits(used.vol[n], fresh.vol[n])) << n;
+        ASSERT_TRUE(sameBits(used.pV[n], fresh.pV[n])) << n;
+    }
+}
+
+
 TEST(mpm3dTransfers, SmoothingScatterIsEachNodesProductBitForBit)
 {
     checkVolumePressurePairs(linearKernel());
@@ -701,14 +743,7 @@ TEST(mpm3dTransfersBenchmark, PassesInCacheAndStreamedFromMemory)
         testParticles tp = streamed
           ? testParticles(g, 2, &gen, lo, hi)
           : testParticles(g, 2, &gen);
-        std::uniform_real_distribution<double> u(-1, 1);
-        for (size_t i = 0; i < tp.m.size(); ++i)
-        {
-            for (int c = 0; c < 6; ++c)
-            {
-                tp.sigma[c][i] = u(gen);
-            }
-        }
+        randomStresses(tp, gen, 1);
         const mpm3dParticles p = tp.view();
         const scatterSchedule schedule(g);
         mpm3dSettings set;

@@ -18,9 +18,9 @@ Description
       order, for the gradient and divergence forms, with and without
       stress and basal coefficients;
     - the node values that pad the lanes stay +0;
-    - the surface gather (S5) against its scalar form, with and without
-      terrain, for one column (gatherColumn) and over every column four at
-      a time (gatherSurface);
+    - the surface gather (S5, the node levels interleaved) against its
+      scalar form, with and without terrain, for one column (gatherColumn)
+      and over every column four at a time (gatherSurface);
     - the velocity gather of G2P against the generic (any Dim) sum;
     - four particles' stencils at once (stencilLanes) against the scalar
       stencil: weights, gradients, offsets and nodes, for the three shape
@@ -29,9 +29,13 @@ Description
     - the force scatter with the surface gather in the same pass (the
       frictionless case's S5 + S7) against S5 column by column then the
       scalar scatter: the columns' gathered values and the node sums;
-    - S9 in one pass (gridToColumns) against G2P then the advance of each
-      column one by one: positions, velocities, gradients, footprints and
-      the removal and split marks.
+    - S9 in one pass (gridToColumns, the node velocities as pairs)
+      against G2P (two arrays) then the advance of each column one by
+      one: positions, velocities, gradients, footprints and the removal
+      and split marks;
+    - the nodes' levels (S4) and velocity pairs (S8) that the gathers read
+      are the node arrays' values, on every node of the box, with mass
+      and without.
     Random columns fill each tile with any number of columns, so that the
     scatters four at a time also end tiles with one to three columns taken
     one by one; their number is not a multiple of four, so that the passes
@@ -124,11 +128,11 @@ struct laneCase
             ZN[j] = v(gen);
             grid.h[j] = hN[j];
             grid.Z[j] = ZN[j];
-            double* const surface =
-                grid.surface.data() + shallowGrid::nSurface*j;
-            surface[shallowGrid::HEIGHT] = hN[j];
-            surface[shallowGrid::ZETA] = zetaN[j];
-            surface[shallowGrid::ELEVATION] = ZN[j];
+            double* const levels =
+                grid.levels.data() + shallowGrid::nLevels*j;
+            levels[shallowGrid::HEIGHT] = hN[j];
+            levels[shallowGrid::ZETA] = zetaN[j];
+            levels[shallowGrid::ELEVATION] = ZN[j];
             grid.vx[j] = v(gen);
             grid.vy[j] = v(gen);
         }
@@ -897,6 +901,73 @@ TEST(vectorLanes, VelocityGatherAndAdvanceInOnePassAreTheTwoPassesBitForBit)
     checkGridToColumns(linearKernel());
     checkGridToColumns(gimp());
     checkGridToColumns(quadraticBSplineKernel());
+}
+
+
+// nodeHeights (S4) and resistanceUpdate (S8) on random node sums, some
+// nodes without mass: the levels hold h, kappa h + Z and Z, and the pairs
+// vx and vy, at every node of the box, bit for bit; the levels' pad lane
+// stays +0. Twice, so that a node that loses its mass is rewritten too
+TEST(vectorLanes, NodeLevelsAndVelocityPairsAreTheNodeArrays)
+{
+    laneCase t;
+    typedef shallowGrid G;
+    std::mt19937 gen(23);
+    std::uniform_real_distribution<double> u(0, 1), v(-1, 1);
+    const label nNodes = t.g.nNodes();
+    std::vector<double> kappaNode(nNodes);
+    for (label n = 0; n < nNodes; ++n)
+    {
+        t.grid.area[n] = 0.1 + u(gen);
+        kappaNode[n] = 0.5 + 0.5*u(gen);
+    }
+    const double rho = 1800, massTol = 0.2, dt = 1e-2;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+        for (label n = 0; n < nNodes; ++n)
+        {
+            double* mp = t.grid.momentum.data() + G::nMomentum*n;
+            mp[G::M] = u(gen);
+            mp[G::PX] = v(gen);
+            mp[G::PY] = v(gen);
+            double* l = t.grid.loads.data() + G::nLoads*n;
+            l[G::FX] = v(gen);
+            l[G::FY] = v(gen);
+            l[G::S] = 10*u(gen);
+            l[G::K1] = u(gen);
+            l[G::K2] = u(gen);
+        }
+        nodeHeights(t.g, t.nodes, t.grid, rho, massTol, true, kappaNode.data());
+        resistanceUpdate(t.g, t.nodes, t.grid, domainSides(), dt, massTol, true);
+
+        label inBox = 0, withMass = 0;
+        t.g.forEachNodeRow
+        (
+            t.nodes,
+            [&](const label first, const label last)
+            {
+                for (label n = first; n < last; ++n)
+                {
+                    const double* lv = t.grid.levels.data() + G::nLevels*n;
+                    const double* vel = t.grid.velocity.data() + G::nVelocity*n;
+                    const double h = t.grid.h[n];
+                    ++inBox;
+                    withMass += h > 0;
+                    ASSERT_TRUE(sameBits(lv[G::HEIGHT], h)) << n;
+                    ASSERT_TRUE
+                    (
+                        sameBits(lv[G::ZETA], kappaNode[n]*h + t.grid.Z[n])
+                    ) << n;
+                    ASSERT_TRUE(sameBits(lv[G::ELEVATION], t.grid.Z[n])) << n;
+                    ASSERT_TRUE(sameBits(lv[G::levelPad], 0.0)) << n;
+                    ASSERT_TRUE(sameBits(vel[G::VX], t.grid.vx[n])) << n;
+                    ASSERT_TRUE(sameBits(vel[G::VY], t.grid.vy[n])) << n;
+                }
+            }
+        );
+        EXPECT_GT(withMass, inBox/2);
+        EXPECT_LT(withMass, inBox);
+    }
 }
 
 
