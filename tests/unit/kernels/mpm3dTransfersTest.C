@@ -566,6 +566,34 @@ TEST(mpm3dTransfers, VolumeChangeFourAtATimeIsEachParticlesBitForBit)
 }
 
 
+// What a smoothing scatter adds to node n of stencil s for value k,
+// w_a (w_b w_c v_k), node by node: add(k, n, product)
+template<class Kernel, int K, class Add>
+void nodeProducts
+(
+    const stencil<3, Kernel>& s,
+    const double (&v)[K],
+    Add&& add
+)
+{
+    for (int c = 0; c < Kernel::width; ++c)
+    {
+        for (int b = 0; b < Kernel::width; ++b)
+        {
+            const double wbc = s.w[1][b]*s.w[2][c];
+            for (int a = 0; a < Kernel::width; ++a)
+            {
+                const gridIndex n = s.base + a + b*s.sy + c*s.sz;
+                for (int k = 0; k < K; ++k)
+                {
+                    add(k, n, s.w[0][a]*(wbc*v[k]));
+                }
+            }
+        }
+    }
+}
+
+
 // The smoothing scatters (scatterScalars: a row's nodes two at a time;
 // volumePressureToPairs: the volume and pressure sums interleaved) add to
 // every node of every stencil w_a (w_b w_c v_k), the scalar form's
@@ -602,21 +630,13 @@ void checkSmoothingScatter(const Kernel& kernel)
             v[k] = u(gen);
         }
         scatterScalars(s, v, qs);
-        for (int c = 0; c < Kernel::width; ++c)
-        {
-            for (int b = 0; b < Kernel::width; ++b)
+        nodeProducts
+        (
+            s, v, [&](const int k, const gridIndex n, const double x)
             {
-                const double wbc = s.w[1][b]*s.w[2][c];
-                for (int a = 0; a < Kernel::width; ++a)
-                {
-                    const gridIndex n = s.base + a + b*s.sy + c*s.sz;
-                    for (int k = 0; k < K; ++k)
-                    {
-                        ref[k][n] += s.w[0][a]*(wbc*v[k]);
-                    }
-                }
+                ref[k][n] += x;
             }
-        }
+        );
     }
     for (int k = 0; k < K; ++k)
     {
@@ -656,21 +676,13 @@ void checkVolumePressurePairs(const Kernel& kernel)
         {
             p.V[i], -p.V[i]*(p.sigma[0][i] + p.sigma[3][i] + p.sigma[5][i])/3
         };
-        for (int c = 0; c < Kernel::width; ++c)
-        {
-            for (int b = 0; b < Kernel::width; ++b)
+        nodeProducts
+        (
+            s, v, [&](const int k, const gridIndex n, const double x)
             {
-                const double wbc = s.w[1][b]*s.w[2][c];
-                for (int a = 0; a < Kernel::width; ++a)
-                {
-                    const gridIndex n = s.base + a + b*s.sy + c*s.sz;
-                    for (int k = 0; k < 2; ++k)
-                    {
-                        ref[2*n + k] += s.w[0][a]*(wbc*v[k]);
-                    }
-                }
+                ref[2*n + k] += x;
             }
-        }
+        );
     }
     for (size_t j = 0; j < ref.size(); ++j)
     {
