@@ -594,11 +594,12 @@ void nodeProducts
 }
 
 
-// The smoothing scatters (scatterScalars: a row's nodes two at a time;
-// volumePressureToPairs: the volume and pressure sums interleaved) add to
-// every node of every stencil w_a (w_b w_c v_k), the scalar form's
-// product, bit for bit: particles one after the other onto random node
-// values, two fields and one, each kernel width (2 nodes a row and 3)
+// The smoothing scatters (scatterScalars: a row's nodes two at a time, a
+// node's values interleaved; volumePressureToPairs: the volume and
+// pressure) add to every node of every stencil w_a (w_b w_c v_k), the
+// scalar form's product, bit for bit: particles one after the other onto
+// random node values, two values a node and one, each kernel width (2
+// nodes a row and 3)
 template<class Kernel, int K>
 void checkSmoothingScatter(const Kernel& kernel)
 {
@@ -606,18 +607,12 @@ void checkSmoothingScatter(const Kernel& kernel)
     std::mt19937 gen(29);
     std::uniform_real_distribution<double> u(-1, 1);
     testParticles tp(g, 2, &gen);
-    std::vector<double> q[K], ref[K];
-    double* qs[K];
-    for (int k = 0; k < K; ++k)
+    std::vector<double> q(K*g.nNodes());
+    for (double& v : q)
     {
-        q[k].resize(g.nNodes());
-        for (double& v : q[k])
-        {
-            v = u(gen);
-        }
-        ref[k] = q[k];
-        qs[k] = q[k].data();
+        v = u(gen);
     }
+    std::vector<double> ref(q);
     for (size_t i = 0; i < tp.m.size(); ++i)
     {
         const stencil<3, Kernel> s
@@ -629,21 +624,18 @@ void checkSmoothingScatter(const Kernel& kernel)
         {
             v[k] = u(gen);
         }
-        scatterScalars(s, v, qs);
+        scatterScalars(s, v, q.data());
         nodeProducts
         (
             s, v, [&](const int k, const gridIndex n, const double x)
             {
-                ref[k][n] += x;
+                ref[K*n + k] += x;
             }
         );
     }
-    for (int k = 0; k < K; ++k)
+    for (size_t j = 0; j < ref.size(); ++j)
     {
-        for (gridIndex n = 0; n < g.nNodes(); ++n)
-        {
-            ASSERT_TRUE(sameBits(q[k][n], ref[k][n])) << k << " " << n;
-        }
+        ASSERT_TRUE(sameBits(q[j], ref[j])) << j;
     }
 }
 

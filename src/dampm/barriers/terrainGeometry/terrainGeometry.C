@@ -60,6 +60,20 @@ Foam::barrierGeometries::terrainGeometry::terrainGeometry
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+inline void Foam::barrierGeometries::terrainGeometry::gradient
+(
+    const scalar x,
+    const scalar y,
+    scalar& Zx,
+    scalar& Zy
+) const
+{
+    const vector2D gradZ = topography_->gradient(x, y);
+    Zx = gradZ.x();
+    Zy = gradZ.y();
+}
+
+
 inline void Foam::barrierGeometries::terrainGeometry::slope
 (
     const terrainRaster* raster,
@@ -75,9 +89,7 @@ inline void Foam::barrierGeometries::terrainGeometry::slope
         raster->evaluate(x, y, Z, Zx, Zy);
         return;
     }
-    const vector2D gradZ = topography_->gradient(x, y);
-    Zx = gradZ.x();
-    Zy = gradZ.y();
+    gradient(x, y, Zx, Zy);
     Z = topography_->Z(x, y);
 }
 
@@ -130,7 +142,7 @@ void Foam::barrierGeometries::terrainGeometry::deeperThan
         scalar Z0, Zx = 0, Zy = 0;
         if (raster)
         {
-            slope(raster, x, y, Z0, Zx, Zy);
+            raster->evaluate(x, y, Z0, Zx, Zy);
         }
         else
         {
@@ -140,7 +152,7 @@ void Foam::barrierGeometries::terrainGeometry::deeperThan
         const bool deep = dz < -depth;
         if (deep && !raster)
         {
-            slope(raster, x, y, Z0, Zx, Zy);
+            gradient(x, y, Zx, Zy);
         }
         in[i] = deep && dz/std::sqrt(1 + Zx*Zx + Zy*Zy) < -depth;
     }
