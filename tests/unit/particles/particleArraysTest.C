@@ -21,6 +21,7 @@ Description
 #include "stencil.H"
 #include "testCase.H"
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <numeric>
@@ -526,6 +527,61 @@ TEST(particleArrays, RemoveFlaggedKeepsOrderOfTheRest)
             EXPECT_EQ(p.component(id)[k], i);
             EXPECT_EQ(p.component(particleArrays::M)[k], 1.0 + i);
             ++k;
+        }
+    }
+}
+
+
+TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
+{
+    // Flags that test the runs' edges: none, all, the first, the last (in
+    // the tail of fewer than eight flags), runs of several, a few at random
+    const gridGeometry g = grid2D();
+    const label n = 1003;
+    std::mt19937 gen(7);
+    std::vector<std::vector<char>> patterns(7, std::vector<char>(n, 0));
+    std::fill(patterns[1].begin(), patterns[1].end(), 1);
+    patterns[2][0] = 1;
+    patterns[3][n - 1] = 1;
+    for (label i = 0; i < n; ++i)
+    {
+        patterns[4][i] = (i/10) % 3 == 1;
+        patterns[5][i] = gen() % 100 == 0;
+        patterns[6][i] = i > 8 && i < n - 2 && i % 9 != 0;
+    }
+    for (const std::vector<char>& flagged : patterns)
+    {
+        particleArrays p = randomParticles(g, n);
+        const tileCellOrder o(g, 4);
+        p.sortByCell(g, o, 1);
+        const particleArrays before = p;
+        const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
+        EXPECT_EQ(p.removeFlagged(flagged), nFlagged);
+        ASSERT_EQ(p.size(), n - nFlagged);
+        label k = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            if (flagged[i])
+            {
+                continue;
+            }
+            for (label c = 0; c < p.nComponentArrays(); ++c)
+            {
+                EXPECT_EQ(p.component(c)[k], before.component(c)[i]);
+            }
+            EXPECT_EQ(p.cell()[k], before.cell()[i]);
+            ++k;
+        }
+
+        // The bins stay and are counted by the next sort, which keeps them
+        EXPECT_TRUE(p.binned());
+        EXPECT_FALSE(p.sortByCell(g, o, 1));
+        ASSERT_EQ(label(p.binStart().size()), o.nRanks() + 1);
+        EXPECT_EQ(p.binStart().back(), p.size());
+        for (label j = 0; j < p.size(); ++j)
+        {
+            const label rank = o.rank(p.cell()[j]);
+            EXPECT_TRUE(p.binStart()[rank] <= j && j < p.binStart()[rank + 1]);
         }
     }
 }

@@ -13,6 +13,36 @@ License
 #include "error.H"
 #include <algorithm>
 #include <limits>
+#include <cstring>
+#include <cstdint>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The first index from i on (below n) whose flag is set, or n: eight
+//  flags a test over the long stretches of unset ones
+Foam::label nextSet(const char* flag, Foam::label i, const Foam::label n)
+{
+    for (; i + 8 <= n; i += 8)
+    {
+        uint64_t eight;
+        std::memcpy(&eight, flag + i, 8);
+        if (eight)
+        {
+            break;
+        }
+    }
+    while (i < n && !flag[i])
+    {
+        ++i;
+    }
+    return i;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -167,42 +197,60 @@ Foam::label Foam::particleArrays::removeFlagged
     const std::vector<char>& flagged
 )
 {
-    label n = 0;
-    order_.resize(size_);
-    for (label i = 0; i < size_; ++i)
+    // The runs of particles kept after the first one removed, as [from, to)
+    // pairs: a step removes few particles, so each array moves in a few
+    // long copies, and not at all before its first removal
+    const char* flag = flagged.data();
+    const label first = nextSet(flag, 0, size_);
+    if (first == size_)
     {
-        if (!flagged[i])
+        return 0;
+    }
+    runs_.clear();
+    label n = first;
+    for (label i = first; i < size_;)
+    {
+        while (i < size_ && flag[i])
         {
-            order_[n++] = i;
+            ++i;
+        }
+        const label from = i;
+        i = nextSet(flag, i, size_);
+        if (i > from)
+        {
+            runs_.push_back(from);
+            runs_.push_back(i);
+            n += i - from;
         }
     }
+    const auto compact = [this, first](auto* array)
+    {
+        label to = first;
+        for (size_t r = 0; r < runs_.size(); r += 2)
+        {
+            const label len = runs_[r + 1] - runs_[r];
+            std::memmove(array + to, array + runs_[r], len*sizeof(*array));
+            to += len;
+        }
+    };
+
+    #pragma omp parallel for schedule(static)
+    for (label c = 0; c < nComponentArrays(); ++c)
+    {
+        compact(components_[c].data());
+    }
+    compact(cell_.data());
+    for (componentArray& c : components_)
+    {
+        c.resize(n);
+    }
+    cell_.resize(n);
     const label nRemoved = size_ - n;
-    if (nRemoved)
-    {
-        // Stable compaction: order_[k] >= k, so copying forwards is safe
-        #pragma omp parallel for schedule(static)
-        for (label c = 0; c < nComponentArrays(); ++c)
-        {
-            double* array = components_[c].data();
-            for (label k = 0; k < n; ++k)
-            {
-                array[k] = array[order_[k]];
-            }
-            components_[c].resize(n);
-        }
-        for (label k = 0; k < n; ++k)
-        {
-            cell_[k] = cell_[order_[k]];
-        }
-        cell_.resize(n);
-        size_ = n;
-        // Compaction keeps the order: the binning stays, recounted (a
-        // restart's bins not yet counted stay for the next sortByCell)
-        if (binned_ && label(binStart_.size()) == binOrder_.nRanks() + 1)
-        {
-            binned_ = countBins();
-        }
-    }
+    size_ = n;
+
+    // Compaction keeps the order: the binning stays, counted again by the
+    // next sortByCell (as a restart's), since an append often comes first
+    binStart_.clear();
     return nRemoved;
 }
 
