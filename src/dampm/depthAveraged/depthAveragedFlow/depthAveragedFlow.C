@@ -781,8 +781,8 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     motion.splitCandidate = splitting_.flags(n).data();
 
     // Velocities from the grid, then positions, footprints, walls and open
-    // sides, in one pass. The columns to split are marked here, and again
-    // after a removal (which moves them); the split checks that the marked
+    // sides, in one pass. The columns to split are marked here (a removal
+    // moves the marks with the columns); the split checks that the marked
     // fit the domain
     const columnAdvance advance
     (
@@ -808,7 +808,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         {
             removed += flagged_[i] ? m[i] : 0;
         }
-        particles_.removeFlagged(flagged_);
+        particles_.removeFlagged(flagged_, {&splitting_.flags(n)});
         outflowMass_ += removed;
     }
 
@@ -818,7 +818,7 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     {
         rheology_->stress(modelView(), dt);
     }
-    splitting_.split(particles_, fields_, nRemoved == 0);
+    splitting_.split(particles_, fields_, true);
     migration_.migrate(particles_);
     prepared_ = false;
     return removed;

@@ -130,15 +130,18 @@ Foam::label Foam::depthAveragedSplitting::split
             }
         }
         list_.clear();
-        for (label i = 0; i < n; ++i)
+        const char* flag = flags_.data();
+        for
+        (
+            label i = particleArrays::nextFlagged(flag, 0, n);
+            i < n;
+            i = particleArrays::nextFlagged(flag, i + 1, n)
+        )
         {
-            if (flags_[i])
+            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+            if (r.fits(Fi, x[i], y[i]))
             {
-                const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
-                if (r.fits(Fi, x[i], y[i]))
-                {
-                    list_.push_back(i);
-                }
+                list_.push_back(i);
             }
         }
     }

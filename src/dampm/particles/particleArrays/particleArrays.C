@@ -15,30 +15,33 @@ License
 #include <limits>
 #include <cstring>
 #include <cstdint>
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
 {
 
-//- The first index from i on (below n) whose flag is set, or n: eight
-//  flags a test over the long stretches of unset ones
-Foam::label nextSet(const char* flag, Foam::label i, const Foam::label n)
+//- Store a value past the caches (where the machine can)
+inline void streamStore(double* to, const double value)
 {
-    for (; i + 8 <= n; i += 8)
-    {
-        uint64_t eight;
-        std::memcpy(&eight, flag + i, 8);
-        if (eight)
-        {
-            break;
-        }
-    }
-    while (i < n && !flag[i])
-    {
-        ++i;
-    }
-    return i;
+#ifdef __SSE2__
+    long long bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    _mm_stream_si64(reinterpret_cast<long long*>(to), bits);
+#else
+    *to = value;
+#endif
+}
+
+//- Order the streaming stores before what follows
+inline void streamFence()
+{
+#ifdef __SSE2__
+    _mm_sfence();
+#endif
 }
 
 } // End anonymous namespace
@@ -59,6 +62,30 @@ Foam::particleArrays::particleArrays()
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::particleArrays::nextFlagged
+(
+    const char* flags,
+    label i,
+    const label n
+)
+{
+    for (; i + 8 <= n; i += 8)
+    {
+        uint64_t eight;
+        std::memcpy(&eight, flags + i, 8);
+        if (eight)
+        {
+            break;
+        }
+    }
+    while (i < n && !flags[i])
+    {
+        ++i;
+    }
+    return i;
+}
+
 
 Foam::label Foam::particleArrays::nComponents(const fieldKind kind)
 {
@@ -194,14 +221,15 @@ Foam::label Foam::particleArrays::append(const label n)
 
 Foam::label Foam::particleArrays::removeFlagged
 (
-    const std::vector<char>& flagged
+    const std::vector<char>& flagged,
+    const std::initializer_list<std::vector<char>*> alongside
 )
 {
     // The runs of particles kept after the first one removed, as [from, to)
     // pairs: a step removes few particles, so each array moves in a few
     // long copies, and not at all before its first removal
     const char* flag = flagged.data();
-    const label first = nextSet(flag, 0, size_);
+    const label first = nextFlagged(flag, 0, size_);
     if (first == size_)
     {
         return 0;
@@ -215,7 +243,7 @@ Foam::label Foam::particleArrays::removeFlagged
             ++i;
         }
         const label from = i;
-        i = nextSet(flag, i, size_);
+        i = nextFlagged(flag, i, size_);
         if (i > from)
         {
             runs_.push_back(from);
@@ -245,6 +273,11 @@ Foam::label Foam::particleArrays::removeFlagged
         c.resize(n);
     }
     cell_.resize(n);
+    for (std::vector<char>* marks : alongside)
+    {
+        compact(marks->data());
+        marks->resize(n);
+    }
     const label nRemoved = size_ - n;
     size_ = n;
 
@@ -281,10 +314,16 @@ void Foam::particleArrays::permute()
         const double* src = array.data();
         const label* ord = order_.data();
 
-        #pragma omp parallel for schedule(static)
-        for (label k = 0; k < size_; ++k)
+        // Streaming stores: the scratch's old values are not read into
+        // the cache to be overwritten (a third less memory traffic)
+        #pragma omp parallel
         {
-            s[k] = src[ord[k]];
+            #pragma omp for schedule(static) nowait
+            for (label k = 0; k < size_; ++k)
+            {
+                streamStore(s + k, src[ord[k]]);
+            }
+            streamFence();
         }
         array.swap(scratch_);
     }
