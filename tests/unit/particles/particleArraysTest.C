@@ -556,8 +556,16 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
         p.sortByCell(g, o, 1);
         const particleArrays before = p;
         const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
-        EXPECT_EQ(p.removeFlagged(flagged), nFlagged);
+        // Marks made before the removal go with their particles
+        std::vector<char> marks(n);
+        for (label i = 0; i < n; ++i)
+        {
+            marks[i] = i % 7 == 0;
+        }
+        const std::vector<char> marksBefore = marks;
+        EXPECT_EQ(p.removeFlagged(flagged, {&marks}), nFlagged);
         ASSERT_EQ(p.size(), n - nFlagged);
+        ASSERT_EQ(label(marks.size()), p.size());
         label k = 0;
         for (label i = 0; i < n; ++i)
         {
@@ -570,6 +578,7 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
                 EXPECT_EQ(p.component(c)[k], before.component(c)[i]);
             }
             EXPECT_EQ(p.cell()[k], before.cell()[i]);
+            EXPECT_EQ(marks[k], marksBefore[i]);
             ++k;
         }
 
