@@ -596,4 +596,62 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
 }
 
 
+TEST(particleArrays, TransientAndRecomputedComponentsStayWhereTheyAre)
+{
+    // A transient component stays at a sort and moves at a removal; a
+    // recomputed one stays at both, a removal only shortens it
+    const gridGeometry g = grid2D();
+    const label n = 500;
+    particleArrays p = randomParticles(g, n);
+    const label id = p.field("id").first;
+    const label t = p.addField("t", particleArrays::fieldKind::internal);
+    const label r = p.addField("r", particleArrays::fieldKind::internal);
+    p.markTransient(t);
+    p.markRecomputed(r);
+    const auto fill = [&]
+    {
+        for (label i = 0; i < p.size(); ++i)
+        {
+            p.component(t)[i] = 10 + i;
+            p.component(r)[i] = 20 + i;
+        }
+    };
+
+    fill();
+    ASSERT_TRUE(p.sortByCell(g));
+    label moved = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        moved += p.component(id)[i] != i;
+        EXPECT_EQ(p.component(t)[i], 10 + i);
+        EXPECT_EQ(p.component(r)[i], 20 + i);
+    }
+    EXPECT_GT(moved, n/2);
+
+    fill();
+    std::vector<double> idBefore(p.component(id), p.component(id) + n);
+    std::vector<char> flagged(n, 0);
+    for (label i = 0; i < n; i += 5)
+    {
+        flagged[i] = 1;
+    }
+    EXPECT_EQ(p.removeFlagged(flagged), n/5);
+    label k = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        if (!flagged[i])
+        {
+            EXPECT_EQ(p.component(id)[k], idBefore[i]);
+            EXPECT_EQ(p.component(t)[k], 10 + i);
+            EXPECT_EQ(p.component(r)[k], 20 + k);
+            ++k;
+        }
+    }
+    EXPECT_EQ(k, p.size());
+
+    const std::string msg = foamErrorMessage([&]{ p.markRecomputed(r, 2); });
+    EXPECT_NE(msg.find("component arrays"), std::string::npos) << msg;
+}
+
+
 // ************************************************************************* //

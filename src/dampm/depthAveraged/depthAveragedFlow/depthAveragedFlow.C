@@ -359,33 +359,40 @@ void Foam::depthAveragedFlow::detectFlatBed()
 
 void Foam::depthAveragedFlow::markTransientFields()
 {
-    // Written by S5 and S7 (or, z and its velocity, for the output) after
-    // every sort before anything reads them, or one value for every column
-    // (a flat bed's): the sort need not move them
+    // Written by S5 (or, z and its velocity, for the output) after every
+    // sort before anything reads them: the sort need not move them. The
+    // diagnostics and the time step read h and grad Z after a removal, so
+    // a removal moves those
     particles_.markTransient(fields_.h());
-    particles_.markTransient(fields_.A());
-    particles_.markTransient(fields_.gradZeta(), 2);
     particles_.markTransient(fields_.gradZ(), 2);
-    particles_.markTransient(fields_.kappa());
-    particles_.markTransient(fields_.Zb());
-    particles_.markTransient(fields_.basal(), 3);
-    particles_.markTransient(particleArrays::Z);
-    particles_.markTransient(particleArrays::UZ);
 
-    // Without a stress model the stress is zero throughout (also when a
+    // Written by S5 and S7 (or for the output) before anything reads them
+    // after a removal too, or one value for every column (a flat bed's):
+    // neither a sort nor a removal moves them
+    particles_.markRecomputed(fields_.A());
+    particles_.markRecomputed(fields_.gradZeta(), 2);
+    particles_.markRecomputed(fields_.kappa());
+    particles_.markRecomputed(fields_.Zb());
+    particles_.markRecomputed(fields_.basal(), 3);
+    particles_.markRecomputed(particleArrays::Z);
+    particles_.markRecomputed(particleArrays::UZ);
+
+    // The stress: its out-of-plane components xz, yz, zz are zero
+    // throughout, and without a stress model so are xx, xy, yy (also when a
     // restart's cloud holds another model's)
-    if (!rheology_->active())
+    const label nSigma =
+        particleArrays::nComponents(particleArrays::fieldKind::symmTensor);
+    for (label c = 0; c < nSigma; ++c)
     {
-        const label nSigma =
-            particleArrays::nComponents(particleArrays::fieldKind::symmTensor);
-        for (label c = 0; c < nSigma; ++c)
+        const bool inPlane = c == 0 || c == 1 || c == 3;
+        if (!(inPlane && rheology_->active()))
         {
             zeroArray
             (
                 particles_.component(fields_.sigma() + c), particles_.size()
             );
+            particles_.markRecomputed(fields_.sigma() + c);
         }
-        particles_.markTransient(fields_.sigma(), nSigma);
     }
 }
 

@@ -126,12 +126,31 @@ Foam::label Foam::particleArrays::addField
         components_.emplace_back(size_, initialValue);
         components_.back().reserve(cell_.capacity());
         transient_.push_back(false);
+        recomputed_.push_back(false);
     }
     return first;
 }
 
 
 void Foam::particleArrays::markTransient(const label first, const label n)
+{
+    markComponents(first, n, transient_);
+}
+
+
+void Foam::particleArrays::markRecomputed(const label first, const label n)
+{
+    markComponents(first, n, transient_);
+    markComponents(first, n, recomputed_);
+}
+
+
+void Foam::particleArrays::markComponents
+(
+    const label first,
+    const label n,
+    std::vector<char>& marks
+) const
 {
     if (first < 0 || n < 0 || first + n > nComponentArrays())
     {
@@ -142,7 +161,7 @@ void Foam::particleArrays::markTransient(const label first, const label n)
     }
     for (label c = first; c < first + n; ++c)
     {
-        transient_[c] = true;
+        marks[c] = true;
     }
 }
 
@@ -265,7 +284,10 @@ Foam::label Foam::particleArrays::removeFlagged
     #pragma omp parallel for schedule(static)
     for (label c = 0; c < nComponentArrays(); ++c)
     {
-        compact(components_[c].data());
+        if (!recomputed_[c])
+        {
+            compact(components_[c].data());
+        }
     }
     compact(cell_.data());
     for (componentArray& c : components_)
