@@ -811,9 +811,15 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     double removed = 0;
     if (nRemoved)
     {
-        for (label i = 0; i < n; ++i)
+        const char* flag = flagged_.data();
+        for
+        (
+            label i = particleArrays::nextFlagged(flag, 0, n);
+            i < n;
+            i = particleArrays::nextFlagged(flag, i + 1, n)
+        )
         {
-            removed += flagged_[i] ? m[i] : 0;
+            removed += m[i];
         }
         particles_.removeFlagged(flagged_, {&splitting_.flags(n)});
         outflowMass_ += removed;

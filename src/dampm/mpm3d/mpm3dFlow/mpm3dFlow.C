@@ -479,22 +479,25 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
 
     // Tallied in storage order: the same on any number of threads
     scalar removed = 0;
-    for (label i = 0; i < n; ++i)
+    const char* flag = flagged_.data();
+    for
+    (
+        label i = particleArrays::nextFlagged(flag, 0, n);
+        i < n;
+        i = particleArrays::nextFlagged(flag, i + 1, n)
+    )
     {
-        if (flagged_[i])
+        removed += m[i];
+        forAll(barriers_, b)
         {
-            removed += m[i];
-            forAll(barriers_, b)
+            barrierMonitor& monitor = barriers_[b].monitor();
+            if
+            (
+                monitor.measuresOvertopping()
+             && monitor.passed(x[0][i], x[1][i], x[2][i])
+            )
             {
-                barrierMonitor& monitor = barriers_[b].monitor();
-                if
-                (
-                    monitor.measuresOvertopping()
-                 && monitor.passed(x[0][i], x[1][i], x[2][i])
-                )
-                {
-                    monitor.addPassedOutflow(m[i]);
-                }
+                monitor.addPassedOutflow(m[i]);
             }
         }
     }
