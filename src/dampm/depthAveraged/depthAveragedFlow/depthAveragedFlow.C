@@ -361,8 +361,8 @@ void Foam::depthAveragedFlow::markTransientFields()
 {
     // Written by S5 (or, z and its velocity, for the output) after every
     // sort before anything reads them: the sort need not move them. The
-    // diagnostics and the time step read h and grad Z after a removal, so
-    // a removal moves those
+    // totals, the stress update and the hand-off's test read h and grad Z
+    // after a removal, so a removal moves those
     particles_.markTransient(fields_.h());
     particles_.markTransient(fields_.gradZ(), 2);
 
