@@ -20,6 +20,7 @@ Description
 #include "depthAveragedSplitting.H"
 #include "depthAveragedParticles.H"
 #include "IStringStream.H"
+#include "testCase.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
@@ -274,6 +275,64 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
         dampmProperties("splitHMin 1e-6;"), g, nPerCell, 1e-4
     );
     EXPECT_EQ(thin.rule().hSplit, 1e-4);
+}
+
+
+TEST(depthAveragedSplitting, MarksMovedByARemovalSplitAsMarksMadeAfterIt)
+{
+    // The solver marks the candidates in G2P and moves the marks with the
+    // columns a removal keeps (removeFlagged's alongside): the split is that
+    // of marks made after the removal, to the bit
+    const gridGeometry g = makeGrid();
+    const dictionary dict = dampmProperties("splitRatio 1.25; splitHMin 0;");
+    depthAveragedSplitting moved(dict, g, nPerCell, 1e-4);
+    depthAveragedSplitting after(dict, g, nPerCell, 1e-4);
+    depthAveragedParticles a = randomColumns(400, 5);
+    depthAveragedParticles b = a;
+    const label n = a.p.size();
+    std::vector<char> removed(n, 0);
+    for (label i = 0; i < n; i += 7)
+    {
+        removed[i] = 1;
+    }
+
+    const splitRule r = moved.rule();
+    std::vector<char>& marks = moved.flags(n);
+    label nMarked = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        marks[i] = r.candidate
+        (
+            a.at(a.f.F(), i), a.at(a.f.F() + 1, i), a.at(a.f.F() + 2, i),
+            a.at(a.f.F() + 3, i), a.at(particleArrays::VOL, i)
+        );
+        nMarked += marks[i];
+    }
+    ASSERT_GT(nMarked, 100);
+    a.p.removeFlagged(removed, {&marks});
+    b.p.removeFlagged(removed);
+
+    const label nSplit = moved.split(a.p, a.f, true);
+    EXPECT_GT(nSplit, 80);
+    EXPECT_EQ(after.split(b.p, b.f, false), nSplit);
+    ASSERT_EQ(a.p.size(), b.p.size());
+    for (label c = 0; c < a.p.nComponentArrays(); ++c)
+    {
+        for (label i = 0; i < a.p.size(); ++i)
+        {
+            ASSERT_EQ(a.p.component(c)[i], b.p.component(c)[i])
+                << "component " << c << ", column " << i;
+        }
+    }
+
+    // Marks that did not follow a removal are refused
+    depthAveragedParticles d = randomColumns(400, 5);
+    depthAveragedSplitting stale(dict, g, nPerCell, 1e-4);
+    stale.flags(n);
+    d.p.removeFlagged(removed);
+    const std::string msg =
+        foamErrorMessage([&]{ stale.split(d.p, d.f, true); });
+    EXPECT_NE(msg.find("split marks"), std::string::npos) << msg;
 }
 
 

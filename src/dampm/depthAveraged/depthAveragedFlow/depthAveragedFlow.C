@@ -366,9 +366,10 @@ void Foam::depthAveragedFlow::markTransientFields()
     particles_.markTransient(fields_.h());
     particles_.markTransient(fields_.gradZ(), 2);
 
-    // Written by S5 and S7 (or for the output) before anything reads them
-    // after a removal too, or one value for every column (a flat bed's):
-    // neither a sort nor a removal moves them
+    // Written by S5 and S6 (z and its velocity for the output only, which
+    // nothing else reads in 2D: the bins, stencils and parts take x and y)
+    // before anything reads them after a removal too, or one value for
+    // every column (a flat bed's): neither a sort nor a removal moves them
     particles_.markRecomputed(fields_.A());
     particles_.markRecomputed(fields_.gradZeta(), 2);
     particles_.markRecomputed(fields_.kappa());

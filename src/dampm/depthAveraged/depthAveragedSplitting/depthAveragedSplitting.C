@@ -107,8 +107,9 @@ Foam::label Foam::depthAveragedSplitting::split
     const label Cc0 = fields.gradU();
     const splitRule r = rule();
 
-    // The candidates (marked again here after a removal moved the columns),
-    // and of them those whose halves fit the domain, in storage order
+    // The candidates (marked here, or by the caller in flags(), moved with
+    // their columns by a removal), and of them those whose halves fit the
+    // domain, in storage order
     {
         const double* F[4] =
         {
@@ -118,6 +119,12 @@ Foam::label Foam::depthAveragedSplitting::split
         const double* x = particles.component(particleArrays::X);
         const double* y = particles.component(particleArrays::Y);
         const double* V = particles.component(particleArrays::VOL);
+        if (marked && label(flags_.size()) != n)
+        {
+            FatalErrorInFunction
+                << flags_.size() << " split marks for " << n << " columns"
+                << abort(FatalError);
+        }
         if (!marked)
         {
             flags_.resize(n);
