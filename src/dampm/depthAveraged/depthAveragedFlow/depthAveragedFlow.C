@@ -812,16 +812,11 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     double removed = 0;
     if (nRemoved)
     {
-        const char* flag = flagged_.data();
-        for
+        particleArrays::forEachFlagged
         (
-            label i = particleArrays::nextFlagged(flag, 0, n);
-            i < n;
-            i = particleArrays::nextFlagged(flag, i + 1, n)
-        )
-        {
-            removed += m[i];
-        }
+            flagged_,
+            [&](const label i){ removed += m[i]; }
+        );
         particles_.removeFlagged(flagged_, {&splitting_.flags(n)});
         outflowMass_ += removed;
     }

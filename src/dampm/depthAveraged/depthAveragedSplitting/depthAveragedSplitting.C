@@ -137,20 +137,18 @@ Foam::label Foam::depthAveragedSplitting::split
             }
         }
         list_.clear();
-        const char* flag = flags_.data();
-        for
+        particleArrays::forEachFlagged
         (
-            label i = particleArrays::nextFlagged(flag, 0, n);
-            i < n;
-            i = particleArrays::nextFlagged(flag, i + 1, n)
-        )
-        {
-            const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
-            if (r.fits(Fi, x[i], y[i]))
+            flags_,
+            [&](const label i)
             {
-                list_.push_back(i);
+                const double Fi[4] = {F[0][i], F[1][i], F[2][i], F[3][i]};
+                if (r.fits(Fi, x[i], y[i]))
+                {
+                    list_.push_back(i);
+                }
             }
-        }
+        );
     }
     const label nSplit = label(list_.size());
     if (!nSplit)

@@ -479,28 +479,26 @@ Foam::scalar Foam::mpm3dFlow::removeOutflow()
 
     // Tallied in storage order: the same on any number of threads
     scalar removed = 0;
-    const char* flag = flagged_.data();
-    for
+    particleArrays::forEachFlagged
     (
-        label i = particleArrays::nextFlagged(flag, 0, n);
-        i < n;
-        i = particleArrays::nextFlagged(flag, i + 1, n)
-    )
-    {
-        removed += m[i];
-        forAll(barriers_, b)
+        flagged_,
+        [&](const label i)
         {
-            barrierMonitor& monitor = barriers_[b].monitor();
-            if
-            (
-                monitor.measuresOvertopping()
-             && monitor.passed(x[0][i], x[1][i], x[2][i])
-            )
+            removed += m[i];
+            forAll(barriers_, b)
             {
-                monitor.addPassedOutflow(m[i]);
+                barrierMonitor& monitor = barriers_[b].monitor();
+                if
+                (
+                    monitor.measuresOvertopping()
+                 && monitor.passed(x[0][i], x[1][i], x[2][i])
+                )
+                {
+                    monitor.addPassedOutflow(m[i]);
+                }
             }
         }
-    }
+    );
     particles_.removeFlagged(flagged_);
     return removed;
 }
