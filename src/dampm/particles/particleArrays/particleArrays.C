@@ -260,14 +260,15 @@ Foam::label Foam::particleArrays::removeFlagged
     const std::initializer_list<std::vector<char>*> alongside
 )
 {
-    // The runs of particles kept after the first one removed, as [from, to)
-    // pairs: a step removes few particles, so each array moves in a few
-    // long copies, and not at all before its first removal
     for (const std::vector<char>* marks : alongside)
     {
         checkFlagSize(*marks, "marks");
     }
     checkFlagSize(flagged, "flags");
+
+    // The runs of particles kept after the first one removed, as [from, to)
+    // pairs: a step removes few particles, so each array moves in a few
+    // long copies, and not at all before its first removal
     const char* flag = flagged.data();
     const label first = nextFlagged(flag, 0, size_);
     if (first == size_)
