@@ -57,6 +57,23 @@ particleArrays randomParticles(const gridGeometry& g, const label n)
     return p;
 }
 
+//- binStart counts every bin of the order, and each particle lies in its
+//  cell's bin
+void expectBinsHoldTheirParticles
+(
+    const particleArrays& p,
+    const tileCellOrder& o
+)
+{
+    ASSERT_EQ(label(p.binStart().size()), o.nRanks() + 1);
+    EXPECT_EQ(p.binStart().back(), p.size());
+    for (label k = 0; k < p.size(); ++k)
+    {
+        const label rank = o.rank(p.cell()[k]);
+        EXPECT_TRUE(p.binStart()[rank] <= k && k < p.binStart()[rank + 1]);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -207,13 +224,7 @@ TEST(particleArrays, SortInTileOrderStoresEveryTileContiguously)
     flagged[0] = flagged[17] = 1;
     EXPECT_EQ(r.removeFlagged(flagged), 2);
     EXPECT_FALSE(r.sortByCell(g, o, 1));
-    ASSERT_EQ(label(r.binStart().size()), o.nRanks() + 1);
-    EXPECT_EQ(r.binStart().back(), r.size());
-    for (label k = 0; k < r.size(); ++k)
-    {
-        const label rank = o.rank(r.cell()[k]);
-        EXPECT_TRUE(r.binStart()[rank] <= k && k < r.binStart()[rank + 1]);
-    }
+    expectBinsHoldTheirParticles(r, o);
 }
 
 
@@ -585,13 +596,7 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
         // The bins stay and are counted by the next sort, which keeps them
         EXPECT_TRUE(p.binned());
         EXPECT_FALSE(p.sortByCell(g, o, 1));
-        ASSERT_EQ(label(p.binStart().size()), o.nRanks() + 1);
-        EXPECT_EQ(p.binStart().back(), p.size());
-        for (label j = 0; j < p.size(); ++j)
-        {
-            const label rank = o.rank(p.cell()[j]);
-            EXPECT_TRUE(p.binStart()[rank] <= j && j < p.binStart()[rank + 1]);
-        }
+        expectBinsHoldTheirParticles(p, o);
     }
 }
 

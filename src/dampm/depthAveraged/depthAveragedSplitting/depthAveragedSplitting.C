@@ -119,13 +119,16 @@ Foam::label Foam::depthAveragedSplitting::split
         const double* x = particles.component(particleArrays::X);
         const double* y = particles.component(particleArrays::Y);
         const double* V = particles.component(particleArrays::VOL);
-        if (marked && label(flags_.size()) != n)
+        if (marked)
         {
-            FatalErrorInFunction
-                << flags_.size() << " split marks for " << n << " columns"
-                << abort(FatalError);
+            if (label(flags_.size()) != n)
+            {
+                FatalErrorInFunction
+                    << flags_.size() << " split marks for " << n
+                    << " columns" << abort(FatalError);
+            }
         }
-        if (!marked)
+        else
         {
             flags_.resize(n);
 
