@@ -601,6 +601,85 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
 }
 
 
+TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
+{
+    // After an append (a split's): removeFlagged then the re-sort of every
+    // particle, against the two in one. The arrays a removal moves (a
+    // transient one too) move with their particles; a recomputed one is
+    // only shortened
+    const gridGeometry g = grid2D();
+    const label n = 1003;
+    const tileCellOrder o(g, 4);
+    std::mt19937 gen(11);
+    for (const int removeEvery : {1, 2, 9, 50, n + 1})
+    {
+        particleArrays a = randomParticles(g, n);
+        const label id = a.field("id").first;
+        const label t = a.addField("t", particleArrays::fieldKind::internal);
+        const label r = a.addField("r", particleArrays::fieldKind::internal);
+        a.markTransient(t);
+        a.markRecomputed(r);
+        a.sortByCell(g, o, 1);
+        const label first = a.append(37);
+        std::uniform_real_distribution<double> u(0, 1);
+        for (label i = 0; i < a.size(); ++i)
+        {
+            if (i >= first)
+            {
+                a.component(particleArrays::X)[i] = u(gen)*g.upper(0);
+                a.component(particleArrays::Y)[i] = u(gen)*g.upper(1);
+                a.component(id)[i] = n + i;
+            }
+            a.component(t)[i] = a.component(id)[i];
+            a.component(r)[i] = -1;
+        }
+        std::vector<char> flagged(a.size(), 0);
+        for (label i = 0; i < first; i += removeEvery)
+        {
+            flagged[i] = gen() % 2;
+        }
+        const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
+        particleArrays b = a;
+
+        EXPECT_EQ(a.removeFlagged(flagged), nFlagged);
+        a.sortByCell(g, o, 1);
+        EXPECT_EQ(b.removeAndSort(flagged, g, o), nFlagged);
+
+        ASSERT_EQ(b.size(), a.size());
+        ASSERT_EQ(b.size(), first + 37 - nFlagged);
+        for (label c = 0; c < a.nComponentArrays(); ++c)
+        {
+            if (c == t || c == r)
+            {
+                continue;
+            }
+            for (label k = 0; k < a.size(); ++k)
+            {
+                ASSERT_EQ(b.component(c)[k], a.component(c)[k])
+                    << "component " << c << " of particle " << k;
+            }
+        }
+        for (label k = 0; k < b.size(); ++k)
+        {
+            EXPECT_EQ(b.component(t)[k], b.component(id)[k]);
+            EXPECT_EQ(b.cell()[k], a.cell()[k]);
+        }
+        EXPECT_EQ(b.binStart(), a.binStart());
+        expectBinsHoldTheirParticles(b, o);
+
+        // The binning is that of the next sort, which keeps it
+        EXPECT_FALSE(b.sortByCell(g, o, 1));
+    }
+
+    particleArrays p = randomParticles(g, 10);
+    const std::string msg = foamErrorMessage
+    (
+        [&]{ p.removeAndSort(std::vector<char>(9, 0), g, o); }
+    );
+    EXPECT_NE(msg.find("9 flags for 10 particles"), std::string::npos) << msg;
+}
+
+
 TEST(particleArrays, TransientAndRecomputedComponentsStayWhereTheyAre)
 {
     // A transient component stays at a sort and moves at a removal; a

@@ -808,29 +808,60 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     );
     const double* m = particles_.component(particleArrays::M);
 
-    // The outflow tallied in storage order: the same on any number of threads
+    // The outflow tallied in storage order: the same on any number of
+    // threads. The columns leaving are not split
     double removed = 0;
+    std::vector<char>& splitMarks = splitting_.flags(n);
     if (nRemoved)
     {
         particleArrays::forEachFlagged
         (
             flagged_,
-            [&](const label i){ removed += m[i]; }
+            [&](const label i)
+            {
+                removed += m[i];
+                splitMarks[i] = false;
+            }
         );
-        particles_.removeFlagged(flagged_, {&splitting_.flags(n)});
         outflowMass_ += removed;
     }
 
     // The stress of the end of the step, from the gradient at the new
-    // positions (a split copies it to both halves)
+    // positions (a split copies it to both halves; each column's own, so
+    // that of the columns leaving is of no consequence)
     if (rheology_->active())
     {
         rheology_->stress(modelView(), dt);
     }
-    splitting_.split(particles_, fields_, true);
+    const label nSplit = splitting_.split(particles_, fields_, true);
+    if (nRemoved)
+    {
+        removeOutflow(nSplit > 0 && !grid_.decomposition().active());
+    }
     migration_.migrate(particles_);
     prepared_ = false;
     return removed;
+}
+
+
+void Foam::depthAveragedFlow::removeOutflow(const bool sortNow)
+{
+    // The halves the split appended stay
+    flagged_.resize(particles_.size(), false);
+
+    // After an append the next step sorts every column: removed in that
+    // sort, the rest move once (the same order and bins)
+    if (sortNow)
+    {
+        particles_.removeAndSort
+        (
+            flagged_, grid_.geometry(), schedule_.cellOrder()
+        );
+    }
+    else
+    {
+        particles_.removeFlagged(flagged_);
+    }
 }
 
 

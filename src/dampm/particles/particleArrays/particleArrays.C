@@ -344,7 +344,11 @@ void Foam::particleArrays::clear()
 }
 
 
-void Foam::particleArrays::permute()
+void Foam::particleArrays::permute
+(
+    const label n,
+    const std::vector<char>& notMoved
+)
 {
     // Arrays that together outgrow the last-level cache (taken as 32 MB)
     // are written with streaming stores: the scratch's old values are not
@@ -353,18 +357,19 @@ void Foam::particleArrays::permute()
     label nMoved = 0;
     for (size_t c = 0; c < components_.size(); ++c)
     {
-        nMoved += !transient_[c];
+        nMoved += !notMoved[c];
     }
-    const bool stream = double(size_)*nMoved*sizeof(double) > 32.0*(1 << 20);
+    const bool stream = double(n)*nMoved*sizeof(double) > 32.0*(1 << 20);
 
-    scratch_.resize(size_);
+    scratch_.resize(n);
     for (size_t c = 0; c < components_.size(); ++c)
     {
-        if (transient_[c])
+        componentArray& array = components_[c];
+        if (notMoved[c])
         {
+            array.resize(n);
             continue;
         }
-        componentArray& array = components_[c];
         double* s = scratch_.data();
         const double* src = array.data();
         const label* ord = order_.data();
@@ -374,7 +379,7 @@ void Foam::particleArrays::permute()
             #pragma omp parallel
             {
                 #pragma omp for schedule(static) nowait
-                for (label k = 0; k < size_; ++k)
+                for (label k = 0; k < n; ++k)
                 {
                     streamStore(s + k, src[ord[k]]);
                 }
@@ -384,12 +389,13 @@ void Foam::particleArrays::permute()
         else
         {
             #pragma omp parallel for schedule(static)
-            for (label k = 0; k < size_; ++k)
+            for (label k = 0; k < n; ++k)
             {
                 s[k] = src[ord[k]];
             }
         }
         array.swap(scratch_);
+        scratch_.resize(n);
     }
 }
 
@@ -414,14 +420,13 @@ bool Foam::particleArrays::countBins()
         binStart_.clear();
         return false;
     }
-    return countRanks();
+    return countRanks(binOrder_.nRanks());
 }
 
 
-bool Foam::particleArrays::countRanks()
+bool Foam::particleArrays::countRanks(const label nBins)
 {
-    const label nRanks = binOrder_.nRanks();
-    binStart_.assign(nRanks + 1, 0);
+    binStart_.assign(nBins + 1, 0);
     label previous = 0;
     bool sorted = true;
     for (label i = 0; i < size_; ++i)
@@ -431,7 +436,7 @@ bool Foam::particleArrays::countRanks()
         previous = r;
         ++binStart_[r + 1];
     }
-    for (label r = 0; r < nRanks; ++r)
+    for (label r = 0; r < nBins; ++r)
     {
         binStart_[r + 1] += binStart_[r];
     }
@@ -638,9 +643,30 @@ bool Foam::particleArrays::sortByCell
         }
     }
 
+    rebin(g, order, nullptr, transient_);
+    return true;
+}
+
+
+bool Foam::particleArrays::rebin
+(
+    const gridGeometry& g,
+    const tileCellOrder& order,
+    const char* removed,
+    const std::vector<char>& notMoved
+)
+{
+    const double* x = component(X);
+    const double* y = component(Y);
+    const double* z = component(Z);
+    cell_.resize(size_);
+    label* cellp = cell_.data();
+
     // Counting sort by rank: binStart is the exclusive prefix sum of the
-    // counts
+    // counts. The removed go to one bin after the last, which the sort
+    // then cuts off
     binOrder_ = order;
+    const label nRanks = order.nRanks();
     rank_.resize(size_);
     // The rank from the cell's indices per axis, not from its flat index
     // (two integer divisions fewer per particle)
@@ -650,31 +676,50 @@ bool Foam::particleArrays::sortByCell
         gridGeometry::index ijk[3];
         g.cellIJK(x[i], y[i], z[i], ijk);
         cellp[i] = g.cellIndex(ijk[0], ijk[1], ijk[2]);
-        rank_[i] = order.rank(ijk[0], ijk[1], ijk[2]);
+        rank_[i] =
+            removed && removed[i] ? nRanks : order.rank(ijk[0], ijk[1], ijk[2]);
     }
-    const bool sorted = countRanks();
+    const bool sorted = countRanks(nRanks + (removed != nullptr));
+    const label n = binStart_[nRanks];
+    binStart_.resize(nRanks + 1);
     binned_ = true;
-    if (sorted)
+    if (sorted && n == size_)
     {
-        return true;
+        return false;
     }
 
-    count_.assign(binStart_.begin(), binStart_.end() - 1);
+    count_.assign(binStart_.begin(), binStart_.end());
     order_.resize(size_);
     for (label i = 0; i < size_; ++i)
     {
         order_[count_[rank_[i]]++] = i;
     }
-    permute();
+    permute(n, notMoved);
 
     // The bins in their new order
     #pragma omp parallel for schedule(static)
-    for (label k = 0; k < size_; ++k)
+    for (label k = 0; k < n; ++k)
     {
         rank_[k] = cellp[order_[k]];
     }
+    rank_.resize(n);
     cell_.swap(rank_);
+    size_ = n;
     return true;
+}
+
+
+Foam::label Foam::particleArrays::removeAndSort
+(
+    const std::vector<char>& flagged,
+    const gridGeometry& g,
+    const tileCellOrder& order
+)
+{
+    checkFlagSize(flagged, "flags");
+    const label n0 = size_;
+    rebin(g, order, flagged.data(), recomputed_);
+    return n0 - size_;
 }
 
 
