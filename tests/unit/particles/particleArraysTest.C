@@ -20,6 +20,7 @@ Description
 #include "shapeKernels.H"
 #include "stencil.H"
 #include "testCase.H"
+#include "threadCount.H"
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <array>
@@ -677,6 +678,77 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
         [&]{ p.removeAndSort(std::vector<char>(9, 0), g, o); }
     );
     EXPECT_NE(msg.find("9 flags for 10 particles"), std::string::npos) << msg;
+}
+
+
+TEST(particleArrays, CountingSortIsStableAndTheSameOnAnyNumberOfThreads)
+{
+    // The threads count and place ranges of ranks split where the
+    // particles' ranks are: sorted from random order, and again after
+    // moves and an append (nearly in order), with and without a removal
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 4);
+    const label n = 5003;
+    std::vector<std::vector<double>> ids;
+    std::vector<std::vector<label>> bins;
+    for (const int nThreads : {1, 2, 3, 7})
+    {
+        const threadCount threads(nThreads);
+        particleArrays p = randomParticles(g, n);
+        const label id = p.field("id").first;
+        p.sortByCell(g, o, 1);
+        std::mt19937 gen(5);
+        std::uniform_real_distribution<double> u(-0.3, 0.3);
+        double* x = p.component(particleArrays::X);
+        double* y = p.component(particleArrays::Y);
+        for (label i = 0; i < n; ++i)
+        {
+            x[i] = std::min(std::max(x[i] + u(gen), 0.0), g.upper(0));
+            y[i] = std::min(std::max(y[i] + u(gen), 0.0), g.upper(1));
+        }
+        const label first = p.append(100);
+        x = p.component(particleArrays::X);
+        y = p.component(particleArrays::Y);
+        for (label i = first; i < p.size(); ++i)
+        {
+            x[i] = 0.5*(u(gen) + 0.3)*g.upper(0)/0.3;
+            y[i] = 0.5*(u(gen) + 0.3)*g.upper(1)/0.3;
+            p.component(id)[i] = i;
+        }
+        const label slot = p.addField("slot", particleArrays::fieldKind::scalar);
+        for (label i = 0; i < p.size(); ++i)
+        {
+            p.component(slot)[i] = i;
+        }
+        particleArrays q = p;
+        std::vector<char> flagged(p.size(), 0);
+        for (label i = 0; i < p.size(); i += 7)
+        {
+            flagged[i] = 1;
+        }
+        ASSERT_TRUE(p.sortByCell(g, o, 1));
+        q.removeAndSort(flagged, g, o);
+        for (const particleArrays* s : {&p, &q})
+        {
+            expectBinsHoldTheirParticles(*s, o);
+            ids.emplace_back(s->component(id), s->component(id) + s->size());
+            bins.push_back(s->binStart());
+            // Stable: within a bin, in the storage order of before
+            const double* was = s->component(slot);
+            for (size_t b = 0; b + 1 < bins.back().size(); ++b)
+            {
+                for (label i = bins.back()[b] + 1; i < bins.back()[b + 1]; ++i)
+                {
+                    EXPECT_LT(was[i - 1], was[i]);
+                }
+            }
+        }
+    }
+    for (size_t k = 2; k < ids.size(); ++k)
+    {
+        EXPECT_EQ(ids[k], ids[k % 2]) << "sort " << k;
+        EXPECT_EQ(bins[k], bins[k % 2]) << "sort " << k;
+    }
 }
 
 

@@ -9,6 +9,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleArrays.H"
+#include "threadTeam.H"
 #include <cmath>
 #include "error.H"
 #include <algorithm>
@@ -424,23 +425,105 @@ bool Foam::particleArrays::countBins()
 }
 
 
+void Foam::particleArrays::splitRanks(const label nBins, const int nParts)
+{
+    // At the ranks of evenly spaced particles: even shares when the
+    // particles are nearly in order, as after a step's moves
+    rankSplit_.assign(nParts + 1, nBins);
+    rankSplit_[0] = 0;
+    for (int t = 1; t < nParts; ++t)
+    {
+        const label r = size_ ? rank_[label(double(size_)*t/nParts)] : 0;
+        rankSplit_[t] = min(max(r, rankSplit_[t - 1]), nBins);
+    }
+}
+
+
 bool Foam::particleArrays::countRanks(const label nBins)
 {
+    const label n = size_;
+    const label* rank = rank_.data();
+    label nDescents = 0;
+    #pragma omp parallel for schedule(static) reduction(+:nDescents)
+    for (label i = 1; i < n; ++i)
+    {
+        nDescents += rank[i] < rank[i - 1];
+    }
+
+    // Each thread counts the particles of its range of ranks and sums its
+    // counts; the ranges' totals are then added on (storage order in each
+    // bin, whatever the number of threads)
     binStart_.assign(nBins + 1, 0);
-    label previous = 0;
-    bool sorted = true;
-    for (label i = 0; i < size_; ++i)
+    label* start = binStart_.data();
+    #pragma omp parallel
     {
-        const label r = rank_[i];
-        sorted = sorted && previous <= r;
-        previous = r;
-        ++binStart_[r + 1];
+        const threadTeam team = thisThread();
+        #pragma omp single
+        {
+            splitRanks(nBins, team.size);
+            rangeTotal_.assign(team.size + 1, 0);
+        }
+        const label lo = rankSplit_[team.index];
+        const label hi = rankSplit_[team.index + 1];
+        if (lo < hi)
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                const label r = rank[i];
+                if (r >= lo && r < hi)
+                {
+                    ++start[r + 1];
+                }
+            }
+            for (label r = lo + 1; r < hi; ++r)
+            {
+                start[r + 1] += start[r];
+            }
+            rangeTotal_[team.index + 1] = start[hi];
+        }
+        #pragma omp barrier
+        label offset = 0;
+        for (int s = 0; s < team.index; ++s)
+        {
+            offset += rangeTotal_[s + 1];
+        }
+        for (label r = lo; r < hi; ++r)
+        {
+            start[r + 1] += offset;
+        }
     }
-    for (label r = 0; r < nBins; ++r)
+    return nDescents == 0;
+}
+
+
+void Foam::particleArrays::orderByRank()
+{
+    // The counting sort's placement by countRanks' ranges of ranks, each in
+    // storage order: stable (a team of another size takes them in turn)
+    const label n = size_;
+    const label* rank = rank_.data();
+    const int nParts = int(rankSplit_.size()) - 1;
+    count_.resize(binStart_.size());
+    order_.resize(n);
+    label* next = count_.data();
+    label* ord = order_.data();
+    #pragma omp parallel
     {
-        binStart_[r + 1] += binStart_[r];
+        const threadTeam team = thisThread();
+        for (int part = team.index; part < nParts; part += team.size)
+        {
+            const label lo = rankSplit_[part], hi = rankSplit_[part + 1];
+            std::copy(binStart_.begin() + lo, binStart_.begin() + hi, next + lo);
+            for (label i = 0; lo < hi && i < n; ++i)
+            {
+                const label r = rank[i];
+                if (r >= lo && r < hi)
+                {
+                    ord[next[r]++] = i;
+                }
+            }
+        }
     }
-    return sorted;
 }
 
 
@@ -688,12 +771,7 @@ bool Foam::particleArrays::rebin
         return false;
     }
 
-    count_.assign(binStart_.begin(), binStart_.end());
-    order_.resize(size_);
-    for (label i = 0; i < size_; ++i)
-    {
-        order_[count_[rank_[i]]++] = i;
-    }
+    orderByRank();
     permute(n, notMoved);
 
     // The bins in their new order
