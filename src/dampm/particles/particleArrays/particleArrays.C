@@ -739,9 +739,10 @@ bool Foam::particleArrays::rebin
     const std::vector<char>& notMoved
 )
 {
+    // (2D: z is not read, and may be stale)
     const double* x = component(X);
     const double* y = component(Y);
-    const double* z = component(Z);
+    const double* z = g.dim == 3 ? component(Z) : x;
     cell_.resize(size_);
     label* cellp = cell_.data();
 
