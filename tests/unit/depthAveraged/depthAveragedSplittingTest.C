@@ -278,27 +278,31 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
 }
 
 
-TEST(depthAveragedSplitting, MarksMovedByARemovalSplitAsMarksMadeAfterIt)
+TEST(depthAveragedSplitting, LeavingColumnsUnmarkedSplitThenDroppedByTheSort)
 {
-    // The solver marks the candidates in G2P and moves the marks with the
-    // columns a removal keeps (removeFlagged's alongside): the split is that
-    // of marks made after the removal, to the bit
+    // The solver's order: candidates marked in G2P, the marks of the
+    // columns leaving cleared, the split, then the removal made by the
+    // re-sort (removeAndSort). Against the removal first, the split of
+    // marks made after it and the full re-sort that follows an append: the
+    // same columns in the same order, to the bit
     const gridGeometry g = makeGrid();
+    const tileCellOrder o(g, 8);
     const dictionary dict = dampmProperties("splitRatio 1.25; splitHMin 0;");
-    depthAveragedSplitting moved(dict, g, nPerCell, 1e-4);
+    depthAveragedSplitting inG2P(dict, g, nPerCell, 1e-4);
     depthAveragedSplitting after(dict, g, nPerCell, 1e-4);
     depthAveragedParticles a = randomColumns(400, 5);
-    depthAveragedParticles b = a;
     const label n = a.p.size();
-    std::vector<char> removed(n, 0);
+    a.p.sortByCell(g, o, 2);
+    depthAveragedParticles b = a;
+    std::vector<char> leaving(n, 0);
     for (label i = 0; i < n; i += 7)
     {
-        removed[i] = 1;
+        leaving[i] = 1;
     }
 
-    const splitRule r = moved.rule();
-    std::vector<char>& marks = moved.flags(n);
-    label nMarked = 0;
+    const splitRule r = inG2P.rule();
+    std::vector<char>& marks = inG2P.flags(n);
+    label nMarked = 0, nBoth = 0;
     for (label i = 0; i < n; ++i)
     {
         marks[i] = r.candidate
@@ -307,14 +311,21 @@ TEST(depthAveragedSplitting, MarksMovedByARemovalSplitAsMarksMadeAfterIt)
             a.at(a.f.F() + 3, i), a.at(particleArrays::VOL, i)
         );
         nMarked += marks[i];
+        nBoth += marks[i] && leaving[i];
+        marks[i] = marks[i] && !leaving[i];
     }
     ASSERT_GT(nMarked, 100);
-    a.p.removeFlagged(removed, {&marks});
-    b.p.removeFlagged(removed);
-
-    const label nSplit = moved.split(a.p, a.f, true);
+    ASSERT_GT(nBoth, 10);
+    const label nSplit = inG2P.split(a.p, a.f, true);
     EXPECT_GT(nSplit, 80);
+    leaving.resize(a.p.size(), 0);
+    EXPECT_EQ(a.p.removeAndSort(leaving, g, o), n/7 + 1);
+
+    leaving.resize(n);
+    b.p.removeFlagged(leaving);
     EXPECT_EQ(after.split(b.p, b.f, false), nSplit);
+    b.p.sortByCell(g, o, 2);
+
     ASSERT_EQ(a.p.size(), b.p.size());
     for (label c = 0; c < a.p.nComponentArrays(); ++c)
     {
@@ -324,12 +335,13 @@ TEST(depthAveragedSplitting, MarksMovedByARemovalSplitAsMarksMadeAfterIt)
                 << "component " << c << ", column " << i;
         }
     }
+    EXPECT_EQ(a.p.binStart(), b.p.binStart());
 
-    // Marks that did not follow a removal are refused
+    // Marks of another number of columns are refused
     depthAveragedParticles d = randomColumns(400, 5);
     depthAveragedSplitting stale(dict, g, nPerCell, 1e-4);
     stale.flags(n);
-    d.p.removeFlagged(removed);
+    d.p.removeFlagged(leaving);
     const std::string msg =
         foamErrorMessage([&]{ stale.split(d.p, d.f, true); });
     EXPECT_NE(msg.find("split marks"), std::string::npos) << msg;

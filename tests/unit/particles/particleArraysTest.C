@@ -58,6 +58,25 @@ particleArrays randomParticles(const gridGeometry& g, const label n)
     return p;
 }
 
+// randomParticles with an internal field marked transient (t) and one
+// marked recomputed (r)
+struct markedParticles
+{
+    particleArrays p;
+    label id, t, r;
+};
+
+markedParticles withMarkedFields(const gridGeometry& g, const label n)
+{
+    markedParticles m{randomParticles(g, n), 0, 0, 0};
+    m.id = m.p.field("id").first;
+    m.t = m.p.addField("t", particleArrays::fieldKind::internal);
+    m.r = m.p.addField("r", particleArrays::fieldKind::internal);
+    m.p.markTransient(m.t);
+    m.p.markRecomputed(m.r);
+    return m;
+}
+
 //- binStart counts every bin of the order, and each particle lies in its
 //  cell's bin
 void expectBinsHoldTheirParticles
@@ -568,16 +587,8 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
         p.sortByCell(g, o, 1);
         const particleArrays before = p;
         const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
-        // Marks made before the removal go with their particles
-        std::vector<char> marks(n);
-        for (label i = 0; i < n; ++i)
-        {
-            marks[i] = i % 7 == 0;
-        }
-        const std::vector<char> marksBefore = marks;
-        EXPECT_EQ(p.removeFlagged(flagged, {&marks}), nFlagged);
+        EXPECT_EQ(p.removeFlagged(flagged), nFlagged);
         ASSERT_EQ(p.size(), n - nFlagged);
-        ASSERT_EQ(label(marks.size()), p.size());
         label k = 0;
         for (label i = 0; i < n; ++i)
         {
@@ -590,7 +601,6 @@ TEST(particleArrays, RemoveFlaggedByRunsKeepsTheRestAndTheirBins)
                 EXPECT_EQ(p.component(c)[k], before.component(c)[i]);
             }
             EXPECT_EQ(p.cell()[k], before.cell()[i]);
-            EXPECT_EQ(marks[k], marksBefore[i]);
             ++k;
         }
 
@@ -612,14 +622,13 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
     const label n = 1003;
     const tileCellOrder o(g, 4);
     std::mt19937 gen(11);
-    for (const int removeEvery : {1, 2, 9, 50, n + 1})
+    // Flags on none, on all of those before the append, on about half of
+    // every k-th
+    for (const int removeEvery : {0, -1, 1, 2, 9, 50})
     {
-        particleArrays a = randomParticles(g, n);
-        const label id = a.field("id").first;
-        const label t = a.addField("t", particleArrays::fieldKind::internal);
-        const label r = a.addField("r", particleArrays::fieldKind::internal);
-        a.markTransient(t);
-        a.markRecomputed(r);
+        markedParticles m = withMarkedFields(g, n);
+        particleArrays& a = m.p;
+        const label id = m.id, t = m.t, r = m.r;
         a.sortByCell(g, o, 1);
         const label first = a.append(37);
         std::uniform_real_distribution<double> u(0, 1);
@@ -635,9 +644,9 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
             a.component(r)[i] = -1;
         }
         std::vector<char> flagged(a.size(), 0);
-        for (label i = 0; i < first; i += removeEvery)
+        for (label i = 0; removeEvery && i < first; ++i)
         {
-            flagged[i] = gen() % 2;
+            flagged[i] = removeEvery < 0 || (i % removeEvery == 0 && gen() % 2);
         }
         const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
         particleArrays b = a;
@@ -671,6 +680,11 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
         // The binning is that of the next sort, which keeps it
         EXPECT_FALSE(b.sortByCell(g, o, 1));
     }
+
+    particleArrays none = randomParticles(g, 0);
+    EXPECT_EQ(none.removeAndSort(std::vector<char>(), g, o), 0);
+    EXPECT_EQ(none.size(), 0);
+    expectBinsHoldTheirParticles(none, o);
 
     particleArrays p = randomParticles(g, 10);
     const std::string msg = foamErrorMessage
@@ -715,7 +729,8 @@ TEST(particleArrays, CountingSortIsStableAndTheSameOnAnyNumberOfThreads)
             y[i] = 0.5*(u(gen) + 0.3)*g.upper(1)/0.3;
             p.component(id)[i] = i;
         }
-        const label slot = p.addField("slot", particleArrays::fieldKind::scalar);
+        const label slot =
+            p.addField("slot", particleArrays::fieldKind::scalar);
         for (label i = 0; i < p.size(); ++i)
         {
             p.component(slot)[i] = i;
@@ -749,6 +764,35 @@ TEST(particleArrays, CountingSortIsStableAndTheSameOnAnyNumberOfThreads)
         EXPECT_EQ(ids[k], ids[k % 2]) << "sort " << k;
         EXPECT_EQ(bins[k], bins[k % 2]) << "sort " << k;
     }
+
+    // Every particle in two cells: most threads' ranges are empty, and one
+    // may hold only the removed (a team of another size for the placement
+    // than for the counts is not reachable but by OMP_DYNAMIC)
+    std::vector<double> crowdedIds;
+    for (const int nThreads : {1, 3, 7})
+    {
+        const threadCount threads(nThreads);
+        particleArrays p = randomParticles(g, 300);
+        double* x = p.component(particleArrays::X);
+        for (label i = 0; i < p.size(); ++i)
+        {
+            x[i] = i % 3 ? 0.1 : 0.6;
+            p.component(particleArrays::Y)[i] = 0.1;
+        }
+        std::vector<char> flagged(p.size(), 0);
+        for (label i = 0; i < p.size(); i += 2)
+        {
+            flagged[i] = 1;
+        }
+        EXPECT_EQ(p.removeAndSort(flagged, g, o), 150);
+        expectBinsHoldTheirParticles(p, o);
+        const double* id = p.component(p.field("id").first);
+        if (nThreads == 1)
+        {
+            crowdedIds.assign(id, id + p.size());
+        }
+        EXPECT_EQ(std::vector<double>(id, id + p.size()), crowdedIds);
+    }
 }
 
 
@@ -758,12 +802,9 @@ TEST(particleArrays, TransientAndRecomputedComponentsStayWhereTheyAre)
     // recomputed one stays at both, a removal only shortens it
     const gridGeometry g = grid2D();
     const label n = 500;
-    particleArrays p = randomParticles(g, n);
-    const label id = p.field("id").first;
-    const label t = p.addField("t", particleArrays::fieldKind::internal);
-    const label r = p.addField("r", particleArrays::fieldKind::internal);
-    p.markTransient(t);
-    p.markRecomputed(r);
+    markedParticles m = withMarkedFields(g, n);
+    particleArrays& p = m.p;
+    const label id = m.id, t = m.t, r = m.r;
     const auto fill = [&]
     {
         for (label i = 0; i < p.size(); ++i)

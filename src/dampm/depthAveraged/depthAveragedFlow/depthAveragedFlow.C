@@ -361,8 +361,8 @@ void Foam::depthAveragedFlow::markTransientFields()
 {
     // Written by S5 (or, z and its velocity, for the output) after every
     // sort before anything reads them: the sort need not move them. The
-    // totals, the stress update and the hand-off's test read h and grad Z
-    // after a removal, so a removal moves those
+    // totals and the hand-off's test read h and grad Z after a removal (or
+    // the re-sort that makes it), so a removal moves those
     particles_.markTransient(fields_.h());
     particles_.markTransient(fields_.gradZ(), 2);
 
@@ -789,9 +789,9 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     motion.splitCandidate = splitting_.flags(n).data();
 
     // Velocities from the grid, then positions, footprints, walls and open
-    // sides, in one pass. The columns to split are marked here (a removal
-    // moves the marks with the columns); the split checks that the marked
-    // fit the domain
+    // sides, in one pass. The columns to split are marked here (but not
+    // those leaving, below); the split checks that the marked fit the
+    // domain
     const columnAdvance advance
     (
         g, sides_, dt, splitting_.active(), splitting_.rule(), motion
@@ -834,6 +834,8 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         rheology_->stress(modelView(), dt);
     }
     const label nSplit = splitting_.split(particles_, fields_, true);
+    // (Decomposed, the migration's appends and removals follow, and the
+    // next step re-sorts after them: the removal compacts)
     if (nRemoved)
     {
         removeOutflow(nSplit > 0 && !grid_.decomposition().active());

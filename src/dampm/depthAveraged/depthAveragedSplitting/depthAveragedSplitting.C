@@ -107,9 +107,8 @@ Foam::label Foam::depthAveragedSplitting::split
     const label Cc0 = fields.gradU();
     const splitRule r = rule();
 
-    // The candidates (marked here, or by the caller in flags(), moved with
-    // their columns by a removal), and of them those whose halves fit the
-    // domain, in storage order
+    // The candidates (marked here, or by the caller in flags()), and of
+    // them those whose halves fit the domain, in storage order
     {
         const double* F[4] =
         {

@@ -257,14 +257,9 @@ Foam::label Foam::particleArrays::append(const label n)
 
 Foam::label Foam::particleArrays::removeFlagged
 (
-    const std::vector<char>& flagged,
-    const std::initializer_list<std::vector<char>*> alongside
+    const std::vector<char>& flagged
 )
 {
-    for (const std::vector<char>* marks : alongside)
-    {
-        checkFlagSize(*marks, "marks");
-    }
     checkFlagSize(flagged, "flags");
 
     // The runs of particles kept after the first one removed, as [from, to)
@@ -318,11 +313,6 @@ Foam::label Foam::particleArrays::removeFlagged
         c.resize(n);
     }
     cell_.resize(n);
-    for (std::vector<char>* marks : alongside)
-    {
-        compact(marks->data());
-        marks->resize(n);
-    }
     const label nRemoved = size_ - n;
     size_ = n;
 
@@ -451,8 +441,7 @@ bool Foam::particleArrays::countRanks(const label nBins)
     }
 
     // Each thread counts the particles of its range of ranks and sums its
-    // counts; the ranges' totals are then added on (storage order in each
-    // bin, whatever the number of threads)
+    // counts; the ranges' totals are then added on
     binStart_.assign(nBins + 1, 0);
     label* start = binStart_.data();
     #pragma omp parallel
@@ -513,7 +502,7 @@ void Foam::particleArrays::orderByRank()
         for (int part = team.index; part < nParts; part += team.size)
         {
             const label lo = rankSplit_[part], hi = rankSplit_[part + 1];
-            std::copy(binStart_.begin() + lo, binStart_.begin() + hi, next + lo);
+            std::copy(binStart_.data() + lo, binStart_.data() + hi, next + lo);
             for (label i = 0; lo < hi && i < n; ++i)
             {
                 const label r = rank[i];
@@ -731,7 +720,7 @@ bool Foam::particleArrays::sortByCell
 }
 
 
-bool Foam::particleArrays::rebin
+void Foam::particleArrays::rebin
 (
     const gridGeometry& g,
     const tileCellOrder& order,
@@ -763,13 +752,15 @@ bool Foam::particleArrays::rebin
         rank_[i] =
             removed && removed[i] ? nRanks : order.rank(ijk[0], ijk[1], ijk[2]);
     }
+    // The removed bin's start, binStart_[nRanks], stays for the placement
+    // (count_ is sized by the bins counted)
     const bool sorted = countRanks(nRanks + (removed != nullptr));
     const label n = binStart_[nRanks];
     binStart_.resize(nRanks + 1);
     binned_ = true;
     if (sorted && n == size_)
     {
-        return false;
+        return;
     }
 
     orderByRank();
@@ -784,7 +775,6 @@ bool Foam::particleArrays::rebin
     rank_.resize(n);
     cell_.swap(rank_);
     size_ = n;
-    return true;
 }
 
 
