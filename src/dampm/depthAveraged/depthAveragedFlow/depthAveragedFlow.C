@@ -786,7 +786,8 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     }
     motion.V = particles_.component(particleArrays::VOL);
     motion.removal = flagged_.data();
-    motion.splitCandidate = splitting_.flags(n).data();
+    std::vector<char>& splitMarks = splitting_.flags(n);
+    motion.splitCandidate = splitMarks.data();
 
     // Velocities from the grid, then positions, footprints, walls and open
     // sides, in one pass. The columns to split are marked here (but not
@@ -811,7 +812,6 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     // The outflow tallied in storage order: the same on any number of
     // threads. The columns leaving are not split
     double removed = 0;
-    std::vector<char>& splitMarks = splitting_.flags(n);
     if (nRemoved)
     {
         particleArrays::forEachFlagged
@@ -833,12 +833,10 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     {
         rheology_->stress(modelView(), dt);
     }
-    const label nSplit = splitting_.split(particles_, fields_, true);
-    // (Decomposed, the migration's appends and removals follow, and the
-    // next step re-sorts after them: the removal compacts)
+    splitting_.split(particles_, fields_, true);
     if (nRemoved)
     {
-        removeOutflow(nSplit > 0 && !grid_.decomposition().active());
+        removeOutflow();
     }
     migration_.migrate(particles_);
     prepared_ = false;
@@ -846,14 +844,16 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
 }
 
 
-void Foam::depthAveragedFlow::removeOutflow(const bool sortNow)
+void Foam::depthAveragedFlow::removeOutflow()
 {
     // The halves the split appended stay
     flagged_.resize(particles_.size(), false);
 
-    // After an append the next step sorts every column: removed in that
-    // sort, the rest move once (the same order and bins)
-    if (sortNow)
+    // Unbinned (after the split's append) the next step sorts every
+    // column: removed in that sort, the rest move once (the same order and
+    // bins). Decomposed, the migration's appends and removals follow, and
+    // the next step sorts after them: the removal compacts
+    if (!particles_.binned() && !grid_.decomposition().active())
     {
         particles_.removeAndSort
         (
