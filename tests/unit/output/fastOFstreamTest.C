@@ -226,9 +226,9 @@ TEST(fastOFstream, NumberTextIsPrintfsAtEveryPrecision)
     std::uniform_real_distribution<double> unit(0, 1);
     std::uniform_int_distribution<int> exponent(-30, 30);
     char text[64];
-    for (int i = 0; i < 60000; ++i)
+    for (int i = 0; i < 68000; ++i)
     {
-        const int digits = 1 + i % 16;
+        const int digits = 1 + i % 17;
         std::snprintf
         (
             text, sizeof(text), "%.0f5e%d",

@@ -35,15 +35,19 @@ constexpr long double exactPowers[nExactPowers] =
     1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L
 };
 
-// The longest precision of the rounded path: its product, below
-// 10^16 < 2^53.2, is within 2^-64 of itself, less than 2^-10.8 (a 17-digit
-// one could be 2^-7.5 off)
-constexpr int maxRoundedPrecision = 16;
+// The longest precision of the rounded path: 17 digits, every double's
+// exact text (exactPrecision). Its product is rounded to 64 bits, so it is
+// within half a unit of its last bit: below 10^16 < 2^53.2 within 2^-11,
+// below 10^17 < 2^56.5 within 2^-8
+constexpr int maxRoundedPrecision = 17;
 
 // How near a rounding midpoint the rounded path leaves a number to
-// std::to_chars: more than three times its product's largest error (0.4 %
-// of the numbers)
-constexpr long double midpointMargin = 1.0L/512;
+// std::to_chars: four times its product's largest error, 2^-9 up to 16
+// digits (0.4 % of the numbers), 2^-6 at 17 (3 %)
+inline long double midpointMargin(const int p)
+{
+    return p < 17 ? 1.0L/512 : 1.0L/64;
+}
 
 // The texts of 00 to 99
 constexpr char digitPairs[] =
@@ -167,7 +171,7 @@ bool extendedPrecision()
 //  extended-precision product of val and a power of ten: its length, or 0
 //  where that product cannot be sure of the rounding (within
 //  midpointMargin of a midpoint between two p-digit numbers, so ties
-//  too), where the power would not be exact, for p > 16, zero, a
+//  too), where the power would not be exact, for p > 17, zero, a
 //  subnormal, an infinity or a NaN: std::to_chars then.
 //  About 40 ns a number against std::to_chars' 95 (its exact decimal
 //  expansion; 3e6 doubles of 1e-11 to 1e11, p = 12, this machine).
@@ -189,6 +193,7 @@ inline int roundedText(char* buffer, const double val, const int p)
     std::uint64_t bits;
     std::memcpy(&bits, &a, sizeof(bits));
     int x = ((int(bits >> 52) - 1023)*315653) >> 20;
+    const long double margin = midpointMargin(p);
     std::int64_t n = 0;
     for (int tries = 0; ; ++tries)
     {
@@ -200,7 +205,7 @@ inline int roundedText(char* buffer, const double val, const int p)
         const long double y = k >= 0 ? a*exactPowers[k] : a/exactPowers[-k];
         n = std::int64_t(y);
         const long double fraction = y - n;
-        if (std::fabs(fraction - 0.5L) < midpointMargin)
+        if (std::fabs(fraction - 0.5L) < margin)
         {
             return 0;
         }
