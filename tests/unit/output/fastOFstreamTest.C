@@ -217,9 +217,12 @@ TEST(fastOFstream, NumberTextIsPrintfsAtEveryPrecision)
 {
     // The numbers that the rounded path is nearest to getting wrong: the
     // doubles nearest to the midpoints between two p-digit numbers (the
-    // margin's), to powers of ten (the exponent's correction) and to
+    // margin's; at 17 digits doubles are too far apart for most of them to
+    // be near one), to powers of ten (the exponent's correction) and to
     // 9.99...95 (the carry into the next power), exact ties (halves and
-    // quarters), and random doubles of every magnitude
+    // quarters; 16-digit integers and a half, 16-digit integers and a
+    // quarter: the ties at 16 and 17 digits), and random doubles of every
+    // magnitude
     const scalarList random(testValues());
     std::vector<double> values(random.begin(), random.end());
     std::mt19937_64 rng(5);
@@ -261,6 +264,16 @@ TEST(fastOFstream, NumberTextIsPrintfsAtEveryPrecision)
         values.push_back(0.5*i);
         values.push_back(-0.25*i);
         values.push_back(i/1024.0);
+    }
+    // Odd multiples of 1/2 in [2^51, 2^52) and of 1/4 in [2^50, 2^51): 16
+    // integer digits and .5, or .25 and .75
+    const std::int64_t two51 = std::int64_t(1) << 51;
+    std::uniform_int_distribution<std::int64_t> odd(0, two51 - 1);
+    for (int i = 0; i < 4000; ++i)
+    {
+        const double k = double(2*two51 + 2*odd(rng) + 1);
+        values.push_back(std::ldexp(k, -1));
+        values.push_back(-std::ldexp(k, -2));
     }
 
     char printed[64], fast[fastOFstream::numberSize];

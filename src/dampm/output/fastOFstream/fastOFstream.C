@@ -35,18 +35,21 @@ constexpr long double exactPowers[nExactPowers] =
     1e21L, 1e22L, 1e23L, 1e24L, 1e25L, 1e26L, 1e27L
 };
 
-// The longest precision of the rounded path: 17 digits, every double's
-// exact text (exactPrecision). Its product is rounded to 64 bits, so it is
-// within half a unit of its last bit: below 10^16 < 2^53.2 within 2^-11,
+// The longest precision of the rounded path: 17 digits, the text that
+// reads every double back (exactPrecision). Its product is one operation
+// rounded to 64 bits: below 10^16 < 2^53.2 within 2^-11 of the exact one,
 // below 10^17 < 2^56.5 within 2^-8
 constexpr int maxRoundedPrecision = 17;
 
 // How near a rounding midpoint the rounded path leaves a number to
-// std::to_chars: four times its product's largest error, 2^-9 up to 16
-// digits (0.4 % of the numbers), 2^-6 at 17 (3 %)
+// std::to_chars. A midpoint n + 1/2 is a long double and rounding is
+// monotonic, so the product can reach a midpoint but not cross it: only a
+// fraction of exactly 1/2 is in doubt. The margin is an allowance of four
+// times the product's error: 2^-9 up to 16 digits (0.4 % of the numbers),
+// 2^-6 at 17 (3 %)
 inline long double midpointMargin(const int p)
 {
-    return p < 17 ? 1.0L/512 : 1.0L/64;
+    return p < maxRoundedPrecision ? 1.0L/512 : 1.0L/64;
 }
 
 // The texts of 00 to 99
@@ -169,9 +172,9 @@ bool extendedPrecision()
 
 //- The text of val at precision p as printf's %.<p>g, rounded from one
 //  extended-precision product of val and a power of ten: its length, or 0
-//  where that product cannot be sure of the rounding (within
-//  midpointMargin of a midpoint between two p-digit numbers, so ties
-//  too), where the power would not be exact, for p > 17, zero, a
+//  where the product lies within midpointMargin of a midpoint between two
+//  p-digit numbers (ties too), where the power would not be exact, for
+//  p > 17, zero, a
 //  subnormal, an infinity or a NaN: std::to_chars then.
 //  About 40 ns a number against std::to_chars' 95 (its exact decimal
 //  expansion; 3e6 doubles of 1e-11 to 1e11, p = 12, this machine).
