@@ -174,8 +174,7 @@ bool extendedPrecision()
 //  extended-precision product of val and a power of ten: its length, or 0
 //  where the product lies within midpointMargin of a midpoint between two
 //  p-digit numbers (ties too), where the power would not be exact, for
-//  p > 17, zero, a
-//  subnormal, an infinity or a NaN: std::to_chars then.
+//  p > 17, zero, a subnormal, an infinity or a NaN: std::to_chars then.
 //  About 40 ns a number against std::to_chars' 95 (its exact decimal
 //  expansion; 3e6 doubles of 1e-11 to 1e11, p = 12, this machine).
 inline int roundedText(char* buffer, const double val, const int p)
