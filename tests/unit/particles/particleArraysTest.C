@@ -695,6 +695,161 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
 }
 
 
+TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
+{
+    // A split's halves (appended, parents ascending, one parent twice)
+    // placed right after their parents in their parents' bins, and flagged
+    // particles removed (a parent and a half among them): every array a
+    // removal moves follows, a recomputed one is only shortened, and the
+    // binning holds and is kept by the next sort. The same on any number of
+    // threads
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 4);
+    const label n = 1003;
+    std::vector<label> parents;
+    for (label i = 3; i < n; i += 17)
+    {
+        parents.push_back(i);
+    }
+    parents.insert(parents.begin() + 5, parents[5]);
+    const label nHalves = label(parents.size());
+    std::vector<std::vector<double>> ids;
+    for (const int nThreads : {1, 2, 3, 7})
+    {
+        const threadCount threads(nThreads);
+        markedParticles m = withMarkedFields(g, n);
+        particleArrays& p = m.p;
+        const label id = m.id, t = m.t, r = m.r;
+        p.sortByCell(g, o, 1);
+        const particleArrays before = p;
+        const label first = p.append(nHalves);
+        for (label k = 0; k < nHalves; ++k)
+        {
+            for (label c = 0; c < p.nComponentArrays(); ++c)
+            {
+                p.component(c)[first + k] = p.component(c)[parents[k]];
+            }
+            p.component(id)[first + k] = n + k;
+        }
+        for (label i = 0; i < p.size(); ++i)
+        {
+            p.component(t)[i] = p.component(id)[i];
+            p.component(r)[i] = -1;
+        }
+        std::vector<char> flagged(p.size(), 0);
+        for (label i = 0; i < n; i += 50)
+        {
+            flagged[i] = 1;
+        }
+        flagged[parents[2]] = 1;
+        flagged[first + 7] = 1;
+        const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
+
+        EXPECT_EQ
+        (
+            p.removeAndPlaceAppended(flagged, parents, g, o, 1),
+            nFlagged
+        );
+
+        // Each kept particle, then its kept halves
+        std::vector<label> from;
+        for (label i = 0, k = 0; i < n; ++i)
+        {
+            if (!flagged[i])
+            {
+                from.push_back(i);
+            }
+            for (; k < nHalves && parents[k] == i; ++k)
+            {
+                if (!flagged[first + k])
+                {
+                    from.push_back(first + k);
+                }
+            }
+        }
+        ASSERT_EQ(p.size(), label(from.size()));
+        for (label k = 0; k < p.size(); ++k)
+        {
+            const label i = from[k];
+            const label self = i < n ? i : parents[i - first];
+            EXPECT_EQ
+            (
+                p.component(id)[k],
+                i < n ? before.component(id)[i] : n + i - first
+            );
+            EXPECT_EQ(p.component(t)[k], p.component(id)[k]);
+            EXPECT_EQ(p.component(r)[k], -1);
+            EXPECT_EQ
+            (
+                p.component(particleArrays::X)[k],
+                before.component(particleArrays::X)[self]
+            );
+            EXPECT_EQ(p.cell()[k], before.cell()[self]);
+        }
+        EXPECT_TRUE(p.binned());
+        expectBinsHoldTheirParticles(p, o);
+        EXPECT_FALSE(p.sortByCell(g, o, 1));
+        ids.emplace_back(p.component(id), p.component(id) + p.size());
+
+        // A half beyond the staleness: the next sort re-bins
+        particleArrays far = p;
+        far.component(particleArrays::X)[from.size() - 1] = 0;
+        far.component(particleArrays::X)[0] = g.upper(0);
+        EXPECT_TRUE(far.sortByCell(g, o, 1));
+        expectBinsHoldTheirParticles(far, o);
+
+        // Without a binning before the append, or with a half beyond the
+        // staleness: a removal and a full sort
+        for (const bool binnedBefore : {false, true})
+        {
+            particleArrays a = randomParticles(g, n);
+            if (binnedBefore)
+            {
+                a.sortByCell(g, o, 1);
+            }
+            a.append(nHalves);
+            a.component(particleArrays::X)[a.size() - 1] = g.upper(0);
+            particleArrays b = a;
+            const label aid = a.field("id").first;
+            EXPECT_EQ
+            (
+                a.removeAndPlaceAppended(flagged, parents, g, o, 1),
+                nFlagged
+            );
+            EXPECT_EQ(b.removeAndSort(flagged, g, o), nFlagged);
+            EXPECT_EQ(a.binStart(), b.binStart());
+            EXPECT_EQ(a.cell(), b.cell());
+            EXPECT_EQ
+            (
+                std::vector<double>
+                (
+                    a.component(aid), a.component(aid) + a.size()
+                ),
+                std::vector<double>
+                (
+                    b.component(aid), b.component(aid) + b.size()
+                )
+            );
+        }
+    }
+    for (size_t k = 1; k < ids.size(); ++k)
+    {
+        EXPECT_EQ(ids[k], ids[0]) << "threads' run " << k;
+    }
+
+    particleArrays p = randomParticles(g, 10);
+    p.append(2);
+    const std::string msg = foamErrorMessage
+    (
+        [&]
+        {
+            p.removeAndPlaceAppended(std::vector<char>(12, 0), {4, 3}, g, o, 1);
+        }
+    );
+    EXPECT_NE(msg.find("not in ascending order"), std::string::npos) << msg;
+}
+
+
 TEST(particleArrays, CountingSortIsStableAndTheSameOnAnyNumberOfThreads)
 {
     // The threads count and place ranges of ranks split where the

@@ -833,10 +833,10 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     {
         rheology_->stress(modelView(), dt);
     }
-    splitting_.split(particles_, fields_, true);
-    if (nRemoved)
+    const label nSplit = splitting_.split(particles_, fields_, true);
+    if (nSplit || nRemoved)
     {
-        removeOutflow();
+        removeOutflowAndPlaceSplit(nSplit);
     }
     migration_.migrate(particles_);
     prepared_ = false;
@@ -844,20 +844,20 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
 }
 
 
-void Foam::depthAveragedFlow::removeOutflow()
+void Foam::depthAveragedFlow::removeOutflowAndPlaceSplit(const label nSplit)
 {
     // The halves the split appended stay
     flagged_.resize(particles_.size(), false);
 
-    // Unbinned (after the split's append) the next step sorts every
-    // column: removed in that sort, the rest move once (the same order and
-    // bins). Decomposed, the migration's appends and removals follow, and
-    // the next step sorts after them: the removal compacts
-    if (!particles_.binned() && !grid_.decomposition().active())
+    // Each half beside its parent, in its parent's bin: the binning stays
+    // while every column is near its bin (else the re-bin is made now).
+    // Decomposed, the migration's appends and removals follow, and the
+    // next step sorts after them
+    if (nSplit && !grid_.decomposition().active())
     {
-        particles_.removeAndSort
+        particles_.removeAndPlaceAppended
         (
-            flagged_, grid_.geometry(), schedule_.cellOrder()
+            flagged_, splitting_.parents(), grid_.geometry(), schedule_
         );
     }
     else

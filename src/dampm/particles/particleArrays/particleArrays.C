@@ -654,6 +654,46 @@ bool Foam::particleArrays::setBins
 }
 
 
+Foam::label Foam::particleArrays::nBeyondBins
+(
+    const gridGeometry& g,
+    const label maxStale
+) const
+{
+    // A count of the particles further than maxStale cells from their bin
+    // per axis, in a loop without a branch or an integer division (it
+    // vectorises). The bin's indices per axis from its flat index: q/n is
+    // the floor of (q + 1/2) (1/n) in double, whose error (relative, about
+    // 2^-52) is far below the 1/(2n) that the quotient's fraction lies from
+    // an integer, for any q < 2^31
+    const double* x = component(X);
+    const double* y = component(Y);
+    const label* cellp = cell_.data();
+    const label s = maxStale;
+    const label nx = g.nCells[0], ny = g.nCells[1];
+    const double invNx = 1.0/nx, invNy = 1.0/ny;
+    // (2D: the z-axis's one cell, so dk = 0)
+    const double* const zOr = g.dim == 3 ? component(Z) : x;
+    const int dz = g.dim == 3 ? 2 : 0;
+    const label layers = g.dim == 3;
+    label nFar = 0;
+    #pragma omp parallel for simd schedule(static) reduction(+:nFar)
+    for (label i = 0; i < size_; ++i)
+    {
+        const label c = cellp[i];
+        const label row = label((c + 0.5)*invNx);
+        const label layer = label((row + 0.5)*invNy);
+        const label di = g.cellDir(0, x[i]) - (c - nx*row);
+        const label dj = g.cellDir(1, y[i]) - (row - ny*layer);
+        const label dk = layers*(g.cellDir(dz, zOr[i]) - layer);
+        nFar +=
+            (di > s) | (-di > s) | (dj > s) | (-dj > s)
+          | (dk > s) | (-dk > s);
+    }
+    return nFar;
+}
+
+
 bool Foam::particleArrays::sortByCell
 (
     const gridGeometry& g,
@@ -661,12 +701,7 @@ bool Foam::particleArrays::sortByCell
     const label maxStale
 )
 {
-    const double* x = component(X);
-    const double* y = component(Y);
-    const double* z = component(Z);
-
     cell_.resize(size_);
-    label* cellp = cell_.data();
 
     // A binning of another order (or a restart's) is kept if it is sorted
     // in this one
@@ -680,39 +715,10 @@ bool Foam::particleArrays::sortByCell
         binned_ = countBins();
     }
 
-    // Keep the binning while every particle is near its bin: a count of
-    // those that are not, in a loop without a branch or an integer
-    // division (it vectorises). The bin's indices per axis from its flat
-    // index: q/n is the floor of (q + 1/2) (1/n) in double, whose error
-    // (relative, about 2^-52) is far below the 1/(2n) that the quotient's
-    // fraction lies from an integer, for any q < 2^31
-    if (maxStale > 0 && binned_)
+    // Kept while every particle is near its bin
+    if (maxStale > 0 && binned_ && nBeyondBins(g, maxStale) == 0)
     {
-        const label s = maxStale;
-        const label nx = g.nCells[0], ny = g.nCells[1];
-        const double invNx = 1.0/nx, invNy = 1.0/ny;
-        // (2D: the z-axis's one cell, so dk = 0)
-        const double* const zOr = g.dim == 3 ? z : x;
-        const int dz = g.dim == 3 ? 2 : 0;
-        const label layers = g.dim == 3;
-        label nFar = 0;
-        #pragma omp parallel for simd schedule(static) reduction(+:nFar)
-        for (label i = 0; i < size_; ++i)
-        {
-            const label c = cellp[i];
-            const label row = label((c + 0.5)*invNx);
-            const label layer = label((row + 0.5)*invNy);
-            const label di = g.cellDir(0, x[i]) - (c - nx*row);
-            const label dj = g.cellDir(1, y[i]) - (row - ny*layer);
-            const label dk = layers*(g.cellDir(dz, zOr[i]) - layer);
-            nFar +=
-                (di > s) | (-di > s) | (dj > s) | (-dj > s)
-              | (dk > s) | (-dk > s);
-        }
-        if (nFar == 0)
-        {
-            return false;
-        }
+        return false;
     }
 
     rebin(g, order, nullptr, transient_);
@@ -789,6 +795,137 @@ Foam::label Foam::particleArrays::removeAndSort
     const label n0 = size_;
     rebin(g, order, flagged.data(), recomputed_);
     return n0 - size_;
+}
+
+
+Foam::label Foam::particleArrays::removeAndPlaceAppended
+(
+    const std::vector<char>& flagged,
+    const std::vector<label>& parents,
+    const gridGeometry& g,
+    const tileCellOrder& order,
+    const label maxStale
+)
+{
+    checkFlagSize(flagged, "flags");
+    const label nAppended = label(parents.size());
+    const label n0 = size_ - nAppended;
+    bool parentsValid = n0 >= 0;
+    for (label k = 0; parentsValid && k < nAppended; ++k)
+    {
+        parentsValid =
+            parents[k] >= 0 && parents[k] < n0
+         && (k == 0 || parents[k] >= parents[k - 1]);
+    }
+    if (!parentsValid)
+    {
+        FatalErrorInFunction
+            << nAppended << " parents, not in ascending order among the "
+            << n0 << " particles before the append" << abort(FatalError);
+    }
+    const bool binnedBefore =
+        binOrder_ == order
+     && label(binStart_.size()) == order.nRanks() + 1
+     && binStart_.back() == n0;
+
+    // A child takes its parent's bin. When some particle is beyond its
+    // bin's staleness the next sort would re-bin all: that re-bin now
+    label* cellp = cell_.data();
+    const label* parent = parents.data();
+    for (label k = 0; binnedBefore && k < nAppended; ++k)
+    {
+        cellp[n0 + k] = cellp[parent[k]];
+    }
+    if (!binnedBefore || maxStale < 1 || nBeyondBins(g, maxStale))
+    {
+        return removeAndSort(flagged, g, order);
+    }
+
+    // order_: each kept particle before the append, then its kept children.
+    // rank_[i]: where particle i's group starts in the new order, so that a
+    // bin starts where its first particle's group does
+    const char* flag = flagged.data();
+    order_.resize(size_);
+    rank_.resize(n0 + 1);
+    label* ord = order_.data();
+    label* groupStart = rank_.data();
+    label n = 0;
+    #pragma omp parallel
+    {
+        const threadTeam team = thisThread();
+        #pragma omp single
+        rangeTotal_.assign(team.size + 1, 0);
+
+        const auto firstChild = [=](const label i)
+        {
+            return label
+            (
+                std::lower_bound(parent, parent + nAppended, i) - parent
+            );
+        };
+        const label a = label(double(n0)*team.index/team.size);
+        const label b = label(double(n0)*(team.index + 1)/team.size);
+        const label ca = firstChild(a), cb = firstChild(b);
+        label kept = 0;
+        for (label i = a; i < b; ++i)
+        {
+            kept += !flag[i];
+        }
+        for (label c = ca; c < cb; ++c)
+        {
+            kept += !flag[n0 + c];
+        }
+        rangeTotal_[team.index + 1] = kept;
+        #pragma omp barrier
+
+        label k = 0;
+        for (int t = 0; t < team.index; ++t)
+        {
+            k += rangeTotal_[t + 1];
+        }
+        label c = ca;
+        for (label i = a; i < b; ++i)
+        {
+            groupStart[i] = k;
+            if (!flag[i])
+            {
+                ord[k++] = i;
+            }
+            for (; c < cb && parent[c] == i; ++c)
+            {
+                if (!flag[n0 + c])
+                {
+                    ord[k++] = n0 + c;
+                }
+            }
+        }
+        if (team.index == team.size - 1)
+        {
+            n = k;
+        }
+    }
+    groupStart[n0] = n;
+
+    label* start = binStart_.data();
+    const label nBins = label(binStart_.size());
+    #pragma omp parallel for schedule(static)
+    for (label r = 0; r < nBins; ++r)
+    {
+        start[r] = groupStart[start[r]];
+    }
+
+    permute(n, recomputed_);
+    rank_.resize(n);
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < n; ++k)
+    {
+        rank_[k] = cellp[ord[k]];
+    }
+    cell_.swap(rank_);
+    const label nRemoved = size_ - n;
+    size_ = n;
+    binned_ = true;
+    return nRemoved;
 }
 
 
