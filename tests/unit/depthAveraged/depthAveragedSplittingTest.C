@@ -278,13 +278,14 @@ TEST(depthAveragedSplitting, DefaultFloorIsOnePercentOfTheThickestColumn)
 }
 
 
-TEST(depthAveragedSplitting, LeavingColumnsUnmarkedSplitThenDroppedByTheSort)
+TEST(depthAveragedSplitting, LeavingColumnsUnmarkedSplitThenDroppedByThePlacing)
 {
     // The solver's order: candidates marked in G2P, the marks of the
-    // columns leaving cleared, the split, then the removal made by the
-    // re-sort (removeAndSort). Against the removal first, the split of
-    // marks made after it and the full re-sort that follows an append: the
-    // same columns in the same order, to the bit
+    // columns leaving cleared, the split, then the halves placed beside
+    // their parents (parents()) by the pass that drops the columns leaving
+    // (removeAndPlaceAppended). Against the removal first, the split of
+    // marks made after it and the placing of its halves: the same columns
+    // in the same order and bins, to the bit
     const gridGeometry g = makeGrid();
     const tileCellOrder o(g, 8);
     const dictionary dict = dampmProperties("splitRatio 1.25; splitHMin 0;");
@@ -319,12 +320,33 @@ TEST(depthAveragedSplitting, LeavingColumnsUnmarkedSplitThenDroppedByTheSort)
     const label nSplit = inG2P.split(a.p, a.f, true);
     EXPECT_GT(nSplit, 80);
     leaving.resize(a.p.size(), 0);
-    EXPECT_EQ(a.p.removeAndSort(leaving, g, o), n/7 + 1);
+    ASSERT_EQ(label(inG2P.parents().size()), nSplit);
+    EXPECT_EQ
+    (
+        a.p.removeAndPlaceAppended(leaving, inG2P.parents(), g, o, 2),
+        n/7 + 1
+    );
 
     leaving.resize(n);
     b.p.removeFlagged(leaving);
+    EXPECT_FALSE(b.p.sortByCell(g, o, 2));
     EXPECT_EQ(after.split(b.p, b.f, false), nSplit);
-    b.p.sortByCell(g, o, 2);
+    const std::vector<char> none(b.p.size(), 0);
+    b.p.removeAndPlaceAppended(none, after.parents(), g, o, 2);
+
+    // Placed, not re-sorted: each half right after its parent (the two
+    // share their footprint exactly; a re-sort puts a half last in its bin)
+    label nBeside = 0;
+    for (label i = 1; i < a.p.size(); ++i)
+    {
+        bool same = a.p.cell()[i] == a.p.cell()[i - 1];
+        for (label c = a.f.F(); c < a.f.F() + 4; ++c)
+        {
+            same = same && a.at(c, i) == a.at(c, i - 1);
+        }
+        nBeside += same;
+    }
+    EXPECT_EQ(nBeside, nSplit);
 
     ASSERT_EQ(a.p.size(), b.p.size());
     for (label c = 0; c < a.p.nComponentArrays(); ++c)

@@ -695,146 +695,145 @@ TEST(particleArrays, RemoveAndSortIsRemoveFlaggedThenAFullSortBitForBit)
 }
 
 
+namespace
+{
+
+//- Particles binned in o with maxStale 1, then halves appended for parents
+//  (copies of them, with ids n, n + 1, ...); t holds the ids and r the
+//  storage index
+markedParticles withHalves
+(
+    const gridGeometry& g,
+    const tileCellOrder& o,
+    const label n,
+    const std::vector<label>& parents
+)
+{
+    markedParticles m = withMarkedFields(g, n);
+    particleArrays& p = m.p;
+    p.sortByCell(g, o, 1);
+    const label first = p.append(label(parents.size()));
+    for (size_t k = 0; k < parents.size(); ++k)
+    {
+        for (label c = 0; c < p.nComponentArrays(); ++c)
+        {
+            p.component(c)[first + k] = p.component(c)[parents[k]];
+        }
+        p.component(m.id)[first + k] = n + k;
+    }
+    for (label i = 0; i < p.size(); ++i)
+    {
+        p.component(m.t)[i] = p.component(m.id)[i];
+        p.component(m.r)[i] = i;
+    }
+    return m;
+}
+
+//- The binning's starts are those a count of its bins gives (empty bins
+//  included), and the next sort keeps it
+void expectBinningOfACount
+(
+    const particleArrays& p,
+    const gridGeometry& g,
+    const tileCellOrder& o
+)
+{
+    expectBinsHoldTheirParticles(p, o);
+    particleArrays counted = p;
+    ASSERT_TRUE(counted.setBins(g, p.cell()));
+    EXPECT_FALSE(counted.sortByCell(g, o, 1));
+    EXPECT_EQ(counted.binStart(), p.binStart());
+    EXPECT_TRUE(std::is_sorted(p.binStart().begin(), p.binStart().end()));
+}
+
+} // End anonymous namespace
+
+
 TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
 {
     // A split's halves (appended, parents ascending, one parent twice)
     // placed right after their parents in their parents' bins, and flagged
     // particles removed (a parent and a half among them): every array a
     // removal moves follows, a recomputed one is only shortened, and the
-    // binning holds and is kept by the next sort. The same on any number of
-    // threads
+    // binning is that of a count of its bins, kept by the next sort. The
+    // same on any number of threads; few particles leave bins empty
     const gridGeometry g = grid2D();
     const tileCellOrder o(g, 4);
-    const label n = 1003;
-    std::vector<label> parents;
-    for (label i = 3; i < n; i += 17)
+    for (const label n : {1003, 60})
     {
-        parents.push_back(i);
-    }
-    parents.insert(parents.begin() + 5, parents[5]);
-    const label nHalves = label(parents.size());
-    std::vector<std::vector<double>> ids;
-    for (const int nThreads : {1, 2, 3, 7})
-    {
-        const threadCount threads(nThreads);
-        markedParticles m = withMarkedFields(g, n);
-        particleArrays& p = m.p;
-        const label id = m.id, t = m.t, r = m.r;
-        p.sortByCell(g, o, 1);
-        const particleArrays before = p;
-        const label first = p.append(nHalves);
-        for (label k = 0; k < nHalves; ++k)
+        std::vector<label> parents;
+        for (label i = 3; i < n; i += 17)
         {
-            for (label c = 0; c < p.nComponentArrays(); ++c)
+            parents.push_back(i);
+        }
+        parents.insert(parents.begin() + 2, parents[2]);
+        const label nHalves = label(parents.size());
+        std::vector<std::vector<double>> ids;
+        for (const int nThreads : {1, 2, 3, 7})
+        {
+            const threadCount threads(nThreads);
+            markedParticles m = withHalves(g, o, n, parents);
+            particleArrays& p = m.p;
+            const label first = n;
+            particleArrays before = p;
+            std::vector<char> flagged(p.size(), 0);
+            for (label i = 0; i < n; i += 50)
             {
-                p.component(c)[first + k] = p.component(c)[parents[k]];
+                flagged[i] = 1;
             }
-            p.component(id)[first + k] = n + k;
-        }
-        for (label i = 0; i < p.size(); ++i)
-        {
-            p.component(t)[i] = p.component(id)[i];
-            p.component(r)[i] = -1;
-        }
-        std::vector<char> flagged(p.size(), 0);
-        for (label i = 0; i < n; i += 50)
-        {
-            flagged[i] = 1;
-        }
-        flagged[parents[2]] = 1;
-        flagged[first + 7] = 1;
-        const label nFlagged = std::count(flagged.begin(), flagged.end(), 1);
+            flagged[parents[1]] = 1;
+            flagged[first + nHalves - 1] = 1;
+            const label nFlagged =
+                std::count(flagged.begin(), flagged.end(), 1);
 
-        EXPECT_EQ
-        (
-            p.removeAndPlaceAppended(flagged, parents, g, o, 1),
-            nFlagged
-        );
-
-        // Each kept particle, then its kept halves
-        std::vector<label> from;
-        for (label i = 0, k = 0; i < n; ++i)
-        {
-            if (!flagged[i])
-            {
-                from.push_back(i);
-            }
-            for (; k < nHalves && parents[k] == i; ++k)
-            {
-                if (!flagged[first + k])
-                {
-                    from.push_back(first + k);
-                }
-            }
-        }
-        ASSERT_EQ(p.size(), label(from.size()));
-        for (label k = 0; k < p.size(); ++k)
-        {
-            const label i = from[k];
-            const label self = i < n ? i : parents[i - first];
             EXPECT_EQ
             (
-                p.component(id)[k],
-                i < n ? before.component(id)[i] : n + i - first
-            );
-            EXPECT_EQ(p.component(t)[k], p.component(id)[k]);
-            EXPECT_EQ(p.component(r)[k], -1);
-            EXPECT_EQ
-            (
-                p.component(particleArrays::X)[k],
-                before.component(particleArrays::X)[self]
-            );
-            EXPECT_EQ(p.cell()[k], before.cell()[self]);
-        }
-        EXPECT_TRUE(p.binned());
-        expectBinsHoldTheirParticles(p, o);
-        EXPECT_FALSE(p.sortByCell(g, o, 1));
-        ids.emplace_back(p.component(id), p.component(id) + p.size());
-
-        // A half beyond the staleness: the next sort re-bins
-        particleArrays far = p;
-        far.component(particleArrays::X)[from.size() - 1] = 0;
-        far.component(particleArrays::X)[0] = g.upper(0);
-        EXPECT_TRUE(far.sortByCell(g, o, 1));
-        expectBinsHoldTheirParticles(far, o);
-
-        // Without a binning before the append, or with a half beyond the
-        // staleness: a removal and a full sort
-        for (const bool binnedBefore : {false, true})
-        {
-            particleArrays a = randomParticles(g, n);
-            if (binnedBefore)
-            {
-                a.sortByCell(g, o, 1);
-            }
-            a.append(nHalves);
-            a.component(particleArrays::X)[a.size() - 1] = g.upper(0);
-            particleArrays b = a;
-            const label aid = a.field("id").first;
-            EXPECT_EQ
-            (
-                a.removeAndPlaceAppended(flagged, parents, g, o, 1),
+                p.removeAndPlaceAppended(flagged, parents, g, o, 1),
                 nFlagged
             );
-            EXPECT_EQ(b.removeAndSort(flagged, g, o), nFlagged);
-            EXPECT_EQ(a.binStart(), b.binStart());
-            EXPECT_EQ(a.cell(), b.cell());
-            EXPECT_EQ
+
+            // Each kept particle, then its kept halves
+            std::vector<label> from;
+            for (label i = 0, k = 0; i < n; ++i)
+            {
+                if (!flagged[i])
+                {
+                    from.push_back(i);
+                }
+                for (; k < nHalves && parents[k] == i; ++k)
+                {
+                    if (!flagged[first + k])
+                    {
+                        from.push_back(first + k);
+                    }
+                }
+            }
+            ASSERT_EQ(p.size(), label(from.size()));
+            for (label k = 0; k < p.size(); ++k)
+            {
+                const label i = from[k];
+                const label parent = i < n ? i : parents[i - first];
+                EXPECT_EQ(p.component(m.id)[k], before.component(m.id)[i]);
+                EXPECT_EQ(p.component(m.t)[k], before.component(m.t)[i]);
+                EXPECT_EQ(p.component(m.r)[k], k);
+                EXPECT_EQ
+                (
+                    p.component(particleArrays::X)[k],
+                    before.component(particleArrays::X)[i]
+                );
+                EXPECT_EQ(p.cell()[k], before.cell()[parent]);
+            }
+            EXPECT_TRUE(p.binned());
+            expectBinningOfACount(p, g, o);
+            ids.emplace_back
             (
-                std::vector<double>
-                (
-                    a.component(aid), a.component(aid) + a.size()
-                ),
-                std::vector<double>
-                (
-                    b.component(aid), b.component(aid) + b.size()
-                )
+                p.component(m.id), p.component(m.id) + p.size()
             );
         }
-    }
-    for (size_t k = 1; k < ids.size(); ++k)
-    {
-        EXPECT_EQ(ids[k], ids[0]) << "threads' run " << k;
+        for (size_t k = 1; k < ids.size(); ++k)
+        {
+            EXPECT_EQ(ids[k], ids[0]) << "threads' run " << k;
+        }
     }
 
     particleArrays p = randomParticles(g, 10);
@@ -846,7 +845,98 @@ TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
             p.removeAndPlaceAppended(std::vector<char>(12, 0), {4, 3}, g, o, 1);
         }
     );
-    EXPECT_NE(msg.find("not in ascending order"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("ascending"), std::string::npos) << msg;
+}
+
+
+TEST(particleArrays, AppendedPlacedOnlyWhileEveryParticleIsNearItsBin)
+{
+    // A half moved exactly maxStale cells from its parent's bin is placed;
+    // one cell further, or without a binning in this order before the
+    // append, the result is removeAndSort's. No halves, everything flagged
+    // and fewer particles than threads are placed too
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 4);
+    const label n = 300;
+    const std::vector<label> parents{2, 40, 41, 299};
+    const double dx = g.upper(0)/g.nCells[0];
+    const auto sameAs = [](particleArrays& a, particleArrays& b)
+    {
+        ASSERT_EQ(a.size(), b.size());
+        EXPECT_EQ(a.binStart(), b.binStart());
+        EXPECT_EQ(a.cell(), b.cell());
+        for (label c = 0; c < a.nComponentArrays(); ++c)
+        {
+            EXPECT_EQ
+            (
+                std::vector<double>(a.component(c), a.component(c) + a.size()),
+                std::vector<double>(b.component(c), b.component(c) + b.size())
+            ) << "component " << c;
+        }
+    };
+    std::vector<char> flagged(n + parents.size(), 0);
+    flagged[7] = 1;
+    for (const label cells : {1, 2})
+    {
+        markedParticles m = withHalves(g, o, n, parents);
+        particleArrays& a = m.p;
+        // The half of parent 40 moved from the parent's bin's cell centre
+        const label half = n + 1;
+        const label c = a.cell()[parents[1]] % g.nCells[0];
+        const double x = (c + 0.5 + (c < 8 ? cells : -cells))*dx;
+        a.component(particleArrays::X)[half] = x;
+        particleArrays b = a;
+        EXPECT_EQ(a.removeAndPlaceAppended(flagged, parents, g, o, 1), 1);
+        EXPECT_EQ(b.removeAndSort(flagged, g, o), 1);
+        if (cells == 1)
+        {
+            EXPECT_EQ(a.component(m.id)[41], n + 1) << "placed";
+            expectBinningOfACount(a, g, o);
+        }
+        else
+        {
+            sameAs(a, b);
+        }
+    }
+    {
+        // Binned in another order before the append
+        markedParticles m = withHalves(g, tileCellOrder(g, 1), n, parents);
+        particleArrays b = m.p;
+        EXPECT_EQ(m.p.removeAndPlaceAppended(flagged, parents, g, o, 1), 1);
+        EXPECT_EQ(b.removeAndSort(flagged, g, o), 1);
+        sameAs(m.p, b);
+    }
+    {
+        // No halves, then every particle flagged
+        markedParticles m = withHalves(g, o, n, {});
+        particleArrays& p = m.p;
+        const particleArrays before = p;
+        EXPECT_EQ
+        (
+            p.removeAndPlaceAppended(std::vector<char>(n, 0), {}, g, o, 1),
+            0
+        );
+        EXPECT_EQ(p.binStart(), before.binStart());
+        EXPECT_EQ
+        (
+            p.removeAndPlaceAppended(std::vector<char>(n, 1), {}, g, o, 1),
+            n
+        );
+        EXPECT_EQ(p.size(), 0);
+        expectBinsHoldTheirParticles(p, o);
+    }
+    {
+        // Three particles and a half on seven threads
+        const threadCount threads(7);
+        markedParticles m = withHalves(g, o, 3, {1});
+        EXPECT_EQ
+        (
+            m.p.removeAndPlaceAppended(std::vector<char>(4, 0), {1}, g, o, 1),
+            0
+        );
+        EXPECT_EQ(m.p.component(m.id)[2], 3);
+        expectBinningOfACount(m.p, g, o);
+    }
 }
 
 

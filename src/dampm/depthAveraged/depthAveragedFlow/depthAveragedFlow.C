@@ -432,6 +432,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     massTol_(0),
     outflowMass_(0),
     prepared_(false),
+    binningChecked_(false),
     terrainFree_(false),
     forcesDone_(false)
 {
@@ -552,7 +553,11 @@ void Foam::depthAveragedFlow::particlesToGrid()
     }
     const gridGeometry& g = grid_.geometry();
     const gridDecomposition& parts = grid_.decomposition();
-    particles_.sortByCell(g, schedule_);
+    if (!binningChecked_)
+    {
+        particles_.sortByCell(g, schedule_);
+    }
+    binningChecked_ = false;
 
     // Work on the nodes the columns touch, and clear those of last step
     // (decomposed: also the shared nodes a neighbour's columns reach)
@@ -850,15 +855,17 @@ void Foam::depthAveragedFlow::removeOutflowAndPlaceSplit(const label nSplit)
     flagged_.resize(particles_.size(), false);
 
     // Each half beside its parent, in its parent's bin: the binning stays
-    // while every column is near its bin (else the re-bin is made now).
-    // Decomposed, the migration's appends and removals follow, and the
-    // next step sorts after them
+    // while every column is near its bin (else the re-bin is made now),
+    // and nothing moves the columns before the next S2, which has then
+    // nothing to check. Decomposed, the migration's appends and removals
+    // follow, and the next step sorts after them
     if (nSplit && !grid_.decomposition().active())
     {
         particles_.removeAndPlaceAppended
         (
             flagged_, splitting_.parents(), grid_.geometry(), schedule_
         );
+        binningChecked_ = true;
     }
     else
     {

@@ -330,6 +330,7 @@ void Foam::particleArrays::clear()
         c.clear();
     }
     cell_.clear();
+    binStart_.clear();
     size_ = 0;
     binned_ = false;
 }
@@ -644,11 +645,11 @@ bool Foam::particleArrays::setBins
     {
         binned_ = bins[i] >= 0 && bins[i] < nCells;
     }
+    // Counted in the order of the next sortByCell
+    binStart_.clear();
     if (binned_)
     {
-        // Counted in the order of the next sortByCell
         cell_ = bins;
-        binStart_.clear();
     }
     return binned_;
 }
@@ -820,16 +821,17 @@ Foam::label Foam::particleArrays::removeAndPlaceAppended
     if (!parentsValid)
     {
         FatalErrorInFunction
-            << nAppended << " parents, not in ascending order among the "
-            << n0 << " particles before the append" << abort(FatalError);
+            << "the parents of the " << nAppended << " particles appended"
+            << " are not ascending indices of the " << n0 << " before them"
+            << abort(FatalError);
     }
     const bool binnedBefore =
         binOrder_ == order
      && label(binStart_.size()) == order.nRanks() + 1
      && binStart_.back() == n0;
 
-    // A child takes its parent's bin. When some particle is beyond its
-    // bin's staleness the next sort would re-bin all: that re-bin now
+    // A child takes its parent's bin. When some particle (one flagged too)
+    // is beyond its bin's staleness, a full re-bin instead
     label* cellp = cell_.data();
     const label* parent = parents.data();
     for (label k = 0; binnedBefore && k < nAppended; ++k)
