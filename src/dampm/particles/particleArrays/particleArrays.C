@@ -389,6 +389,18 @@ void Foam::particleArrays::permute
         array.swap(scratch_);
         scratch_.resize(n);
     }
+
+    // The bins in their new order (rank_ is free once order_ is made)
+    const label* cellp = cell_.data();
+    const label* ord = order_.data();
+    rank_.resize(n);
+    #pragma omp parallel for schedule(static)
+    for (label k = 0; k < n; ++k)
+    {
+        rank_[k] = cellp[ord[k]];
+    }
+    cell_.swap(rank_);
+    size_ = n;
 }
 
 
@@ -772,16 +784,6 @@ void Foam::particleArrays::rebin
 
     orderByRank();
     permute(n, notMoved);
-
-    // The bins in their new order
-    #pragma omp parallel for schedule(static)
-    for (label k = 0; k < n; ++k)
-    {
-        rank_[k] = cellp[order_[k]];
-    }
-    rank_.resize(n);
-    cell_.swap(rank_);
-    size_ = n;
 }
 
 
@@ -916,16 +918,8 @@ Foam::label Foam::particleArrays::removeAndPlaceAppended
         start[r] = groupStart[start[r]];
     }
 
-    permute(n, recomputed_);
-    rank_.resize(n);
-    #pragma omp parallel for schedule(static)
-    for (label k = 0; k < n; ++k)
-    {
-        rank_[k] = cellp[ord[k]];
-    }
-    cell_.swap(rank_);
     const label nRemoved = size_ - n;
-    size_ = n;
+    permute(n, recomputed_);
     binned_ = true;
     return nRemoved;
 }
