@@ -718,11 +718,7 @@ bool Foam::particleArrays::sortByCell
 
     // A binning of another order (or a restart's) is kept if it is sorted
     // in this one
-    if
-    (
-        binned_
-     && (binOrder_ != order || label(binStart_.size()) != order.nRanks() + 1)
-    )
+    if (binned_ && !binsCountedIn(order))
     {
         binOrder_ = order;
         binned_ = countBins();
@@ -827,10 +823,7 @@ Foam::label Foam::particleArrays::removeAndPlaceAppended
             << " are not ascending indices of the " << n0 << " before them"
             << abort(FatalError);
     }
-    const bool binnedBefore =
-        binOrder_ == order
-     && label(binStart_.size()) == order.nRanks() + 1
-     && binStart_.back() == n0;
+    const bool binnedBefore = binsCountedIn(order) && binStart_.back() == n0;
 
     // A child takes its parent's bin. When some particle (one flagged too)
     // is beyond its bin's staleness, a full re-bin instead
