@@ -71,9 +71,14 @@ void Foam::depthAveragedFlow::bindCommon(View& v)
     v.sigma[0] = p.component(fields_.sigma());
     v.sigma[1] = p.component(fields_.sigma() + 1);
     v.sigma[2] = p.component(fields_.sigma() + 3);
-    v.s = p.component(fields_.basal());
-    v.k1 = p.component(fields_.basal() + 1);
-    v.k2 = p.component(fields_.basal() + 2);
+    const unsigned terms = basalTerms();
+    const auto basal = [&](const unsigned term, const int k)
+    {
+        return terms & term ? p.component(fields_.basal() + k) : nullptr;
+    };
+    v.s = basal(basalTerm::s, 0);
+    v.k1 = basal(basalTerm::k1, 1);
+    v.k2 = basal(basalTerm::k2, 2);
 }
 
 
@@ -107,9 +112,15 @@ Foam::shallowParticles Foam::depthAveragedFlow::modelView()
 }
 
 
+unsigned Foam::depthAveragedFlow::basalTerms() const
+{
+    return friction_->basalTerms() | rheology_->basalTerms();
+}
+
+
 bool Foam::depthAveragedFlow::basalActive() const
 {
-    return friction_->active() || rheology_->basalShear();
+    return basalTerms() != 0;
 }
 
 
@@ -715,9 +726,13 @@ void Foam::depthAveragedFlow::computeForces()
 
     if (basal)
     {
-        for (int k = 0; k < 3; ++k)
+        // Only the coefficients a model adds to (the others are null)
+        for (double* coefficient : {view.s, view.k1, view.k2})
         {
-            zeroArray(particles_.component(fields_.basal() + k), particles_.size());
+            if (coefficient)
+            {
+                zeroArray(coefficient, view.n);
+            }
         }
         if (friction_->active())
         {
