@@ -19,6 +19,10 @@ Description
 #include "rheologyModel.H"
 #include "columnArrays.H"
 #include <gtest/gtest.h>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace Foam;
 
@@ -61,26 +65,48 @@ void expectAddsToItsTerms(const Model& model, const std::string& what)
     }
 }
 
+
+//- expectAddsToItsTerms for each model of a family, by its type and
+//  coefficients under keyword; every type the family can select is among
+//  them (a model added later is tested too)
+template<class Family>
+void expectEachAddsToItsTerms
+(
+    const std::string& keyword,
+    const std::vector<std::pair<std::string, std::string>>& models
+)
+{
+    std::set<std::string> tested;
+    for (const auto& [type, coeffs] : models)
+    {
+        expectAddsToItsTerms
+        (
+            Family::New(modelDict(keyword, type, coeffs))(),
+            type + " " + coeffs
+        );
+        tested.insert(type);
+    }
+    for (const word& type : Family::dictionaryConstructorTablePtr_->sortedToc())
+    {
+        EXPECT_TRUE(tested.count(type)) << keyword << " " << type;
+    }
+}
+
 } // End anonymous namespace
 
 
 TEST(basalTerms, EveryBedFrictionAddsToExactlyTheTermsItNames)
 {
-    const std::pair<std::string, std::string> models[] =
-    {
-        {"none", ""},
-        {"Coulomb", "phi 20;"},
-        {"Coulomb", "phi 20; pA 50;"},
-        {"Voellmy", "phi 20; xi 500;"}
-    };
-    for (const auto& [type, coeffs] : models)
-    {
-        expectAddsToItsTerms
-        (
-            bedFrictionModel::New(modelDict("bedFriction", type, coeffs))(),
-            type + " " + coeffs
-        );
-    }
+    expectEachAddsToItsTerms<bedFrictionModel>
+    (
+        "bedFriction",
+        {
+            {"none", ""},
+            {"Coulomb", "phi 20;"},
+            {"Coulomb", "phi 20; pA 50;"},
+            {"Voellmy", "phi 20; xi 500;"}
+        }
+    );
     EXPECT_EQ
     (
         bedFrictionModel::New
@@ -94,23 +120,18 @@ TEST(basalTerms, EveryBedFrictionAddsToExactlyTheTermsItNames)
 
 TEST(basalTerms, EveryRheologyAddsToExactlyTheTermsItNames)
 {
-    const std::pair<std::string, std::string> models[] =
-    {
-        {"inviscid", ""},
-        {"Newtonian", "mu 30;"},
-        {"Newtonian", "mu 30; basalShear true;"},
-        {"Bingham", "mu 50; tauY 2000; shearModulus 0;"},
-        {"Bingham", "mu 50; tauY 2000; basalShear true; shearModulus 0;"},
-        {"Bingham", "mu 50; tauY 2000; basalShear true;"}
-    };
-    for (const auto& [type, coeffs] : models)
-    {
-        expectAddsToItsTerms
-        (
-            rheologyModel::New(modelDict("rheology", type, coeffs))(),
-            type + " " + coeffs
-        );
-    }
+    expectEachAddsToItsTerms<rheologyModel>
+    (
+        "rheology",
+        {
+            {"inviscid", ""},
+            {"Newtonian", "mu 30;"},
+            {"Newtonian", "mu 30; basalShear true;"},
+            {"Bingham", "mu 50; tauY 2000; shearModulus 0;"},
+            {"Bingham", "mu 50; tauY 2000; basalShear true; shearModulus 0;"},
+            {"Bingham", "mu 50; tauY 2000; basalShear true;"}
+        }
+    );
     EXPECT_EQ
     (
         rheologyModel::New

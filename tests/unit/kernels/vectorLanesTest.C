@@ -845,6 +845,41 @@ TEST(vectorLanes, ForceScatterIsTheScalarSumBitForBit)
 }
 
 
+TEST(vectorLanes, ForceScatterTakesANullBasalCoefficientAsZeros)
+{
+    // Each coefficient that no model adds to, null, against the same one
+    // zeroed: the node loads are the same bits (four columns at a time and
+    // the last few one by one)
+    const quadraticBSplineKernel kernel;
+    for (const int absent : {0, 1, 2})
+    {
+        laneCase t;
+        std::vector<double>* coefficients[3] = {&t.s, &t.k1, &t.k2};
+        coefficients[absent]->assign(t.p.size(), 0.0);
+        const auto loads = [&](const shallowColumns& cols)
+        {
+            zeroNodes(t.g, t.nodes, t.grid);
+            scatterForces<quadraticBSplineKernel, true, true, true>
+            (
+                t.scatter(), kernel, t.grid, cols, 1800, 9.81
+            );
+            return t.grid.loads;
+        };
+        const auto zeroed = loads(t.columns());
+        shallowColumns cols = t.columns();
+        const double** pointers[3] = {&cols.s, &cols.k1, &cols.k2};
+        *pointers[absent] = nullptr;
+        const auto null = loads(cols);
+        ASSERT_EQ(zeroed.size(), null.size());
+        for (size_t j = 0; j < zeroed.size(); ++j)
+        {
+            ASSERT_TRUE(sameBits(zeroed[j], null[j]))
+                << "coefficient " << absent << ", load " << j;
+        }
+    }
+}
+
+
 TEST(vectorLanes, SurfaceGatherIsTheScalarSumBitForBit)
 {
     checkSurfaceGather<linearKernel, true>(linearKernel());

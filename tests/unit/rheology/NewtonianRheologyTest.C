@@ -168,8 +168,8 @@ TEST(NewtonianRheology, BasalShearIsTheDragOfTheParabolicProfile)
             modelDict("rheology", "Newtonian", "mu 30; basalShear true;")
         )
     );
-    EXPECT_FALSE(off->basalShear());
-    EXPECT_TRUE(on->basalShear());
+    EXPECT_EQ(off->basalTerms(), 0u);
+    EXPECT_EQ(on->basalTerms(), unsigned(basalTerm::k1));
 
     columnArrays cols({h[0], h[1], h[2]}, {a[0], a[1], a[2]},
         {kappa[0], kappa[1], kappa[2]});

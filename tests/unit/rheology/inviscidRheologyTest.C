@@ -29,7 +29,7 @@ TEST(inviscidRheology, SelectedByDefaultInactiveWithZeroStress)
         const autoPtr<rheologyModel> rheology(rheologyModel::New(dict));
         EXPECT_EQ(word(rheology->type()), "inviscid");
         EXPECT_FALSE(rheology->active());
-        EXPECT_FALSE(rheology->basalShear());
+        EXPECT_EQ(rheology->basalTerms(), 0u);
         EXPECT_EQ(rheology->maxViscosity(), 0);
         EXPECT_EQ(rheology->shearModulus(), 0);
 

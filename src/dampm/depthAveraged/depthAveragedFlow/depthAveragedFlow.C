@@ -74,7 +74,7 @@ void Foam::depthAveragedFlow::bindCommon(View& v)
     const unsigned terms = basalTerms();
     const auto basal = [&](const unsigned term, const int k)
     {
-        return terms & term ? p.component(fields_.basal() + k) : nullptr;
+        return (terms & term) ? p.component(fields_.basal() + k) : nullptr;
     };
     v.s = basal(basalTerm::s, 0);
     v.k1 = basal(basalTerm::k1, 1);
