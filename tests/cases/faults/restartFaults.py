@@ -6,6 +6,7 @@ byte, with the cloud in binary (the default) or ASCII, the fields in ASCII
 at writePrecision 6 or binary; a restart refuses, by name, an incomplete
 directory it cannot fall back from, a complete one missing a piece, and a
 corrupt (ASCII) cloud."""
+import gzip
 import os
 import random
 import re
@@ -32,7 +33,10 @@ class Case:
         return fc.run([self.solver], case, log or "log." + self.solver)
 
     def finalFiles(self, case, t):
-        return fc.cloudFiles(case, t, self.cloud) + [os.path.join("uniform", self.state)]
+        state = os.path.join("uniform", self.state)
+        if not os.path.isfile(os.path.join(case, t, state)):
+            state += ".gz"  # writeCompression on
+        return fc.cloudFiles(case, t, self.cloud) + [state]
 
 
 def reference(c):
@@ -110,6 +114,30 @@ def formats(c, ref, times):
           "ref: the cloud is written in binary by default")
     formatVariant(c, ref, times, "binary", {"writeFormat": "binary"}, "binary")
     return formatVariant(c, ref, times, "asciiCloud", {"cloudFormat": "ascii"}, "ascii")
+
+
+def compressed(c, ref, times):
+    """writeCompression on: the background writer deflates the files (gzip,
+    zlib's fastest level). Every summary row is that of ref, a restart from
+    the first write ends in its own final files, byte for byte, and each
+    time directory holds the files that the solver's own thread writes
+    through OpenFOAM's compressed stream (writeInBackground no), the same
+    text decompressed."""
+    run = formatVariant(c, ref, times, "compressed", {"writeCompression": "on"}, "binary")
+    own = fc.newRun("compressedForeground", entries={"writeCompression": "on", "writeInBackground": "no"})
+    status, out = c.run(own)
+    fc.checkAccepted("compressedForeground", status, out)
+    text = lambda path: gzip.open(path).read() if path.endswith(".gz") else open(path, "rb").read()
+    nCompressed = 0
+    for t in times:
+        listed = [fc.dp.files_below(os.path.join(case, t)) for case in (run, own)]
+        check(listed[0] == listed[1], "compressed: the files of %s are the solver thread's (%s)"
+              % (t, sorted(set(listed[0]) ^ set(listed[1])) or "the same"))
+        differ = [f for f in listed[0] if text(os.path.join(run, t, f)) != text(os.path.join(own, t, f))]
+        check(not differ, "compressed: %s decompressed as the solver thread's (differ: %s)"
+              % (t, differ or "none"))
+        nCompressed += sum(f.endswith(".gz") for f in listed[0])
+    print("compressed: %d files compressed in %d time directories" % (nCompressed, len(times)))
 
 
 def foreground(c, ref, times):

@@ -22,6 +22,7 @@ Description
 #include "fileContents.H"
 #include "backgroundWriter.H"
 #include "fastOFstream.H"
+#include "IFstream.H"
 #include "OSspecific.H"
 #include "scalarList.H"
 #include <gtest/gtest.h>
@@ -31,6 +32,7 @@ Description
 #include <sstream>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <zlib.h>
 
 using namespace Foam;
 
@@ -121,6 +123,69 @@ bool collectBeyondAFileSizeLimit(const fileName& dir)
      && failure.find(dir/"big") != std::string::npos
      && failure.find("File too large") != std::string::npos
      && !exists(dir/"big");
+}
+
+//- The text of a file or, where there is none, of file.gz decompressed
+//  (as OpenFOAM's readers take it)
+std::string decompressed(const fileName& file)
+{
+    IFstream is(file);
+    std::stringstream text;
+    text << is.stdStream().rdbuf();
+    return text.str();
+}
+
+//- The text of a gzip file, decompressed strictly: "" unless it is one
+//  whole gzip stream (its trailer's checksum and length right) and nothing
+//  after it
+std::string gunzipped(const fileName& file)
+{
+    std::string in = contents(file);
+    std::string text;
+    z_stream z{};
+    if (in.empty() || inflateInit2(&z, 15 + 16) != Z_OK)
+    {
+        return text;
+    }
+    z.next_in = reinterpret_cast<Bytef*>(&in[0]);
+    z.avail_in = uInt(in.size());
+    char out[1 << 16];
+    int status = Z_OK;
+    while (status == Z_OK)
+    {
+        z.next_out = reinterpret_cast<Bytef*>(out);
+        z.avail_out = sizeof(out);
+        status = inflate(&z, Z_NO_FLUSH);
+        text.append(out, sizeof(out) - z.avail_out);
+    }
+    const bool whole = status == Z_STREAM_END && z.avail_in == 0;
+    inflateEnd(&z);
+    return whole ? text : std::string();
+}
+
+//- With a file-size limit of 64 kB: does a compressed file whose deflated
+//  bytes do not fit fail, named (.gz) with the reason, and get removed?
+bool deflateBeyondAFileSizeLimit(const fileName& dir)
+{
+    limitFileSize();
+    std::string noise(1 << 20, ' ');
+    unsigned state = 12345;
+    for (char& c : noise)
+    {
+        state = 1103515245u*state + 12345u;
+        c = char(state >> 24);
+    }
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        writer.add({kind::writeCompressed, dir/"big", noise});
+        writer.submit();
+    }
+    const std::string failure = writer.wait();
+    return
+        failure.find(dir/"big.gz") != std::string::npos
+     && failure.find("File too large") != std::string::npos
+     && !exists(dir/"big.gz") && !exists(dir/"big", false);
 }
 
 //- Hand nFiles files and a record over, then exit with code
@@ -257,6 +322,51 @@ TEST(backgroundWriter, WritesALargeFileAsItComes)
 }
 
 
+TEST(backgroundWriter, DeflatesACompressedFileOnItsThread)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    const label n = 50000;
+    const IOstream::versionNumber ver = IOstream::currentVersion;
+    {
+        // Written now, by OpenFOAM's compressed stream
+        fastOFstream os
+        (
+            dir/"direct", IOstream::ASCII, ver, IOstream::COMPRESSED
+        );
+        writeNumbers(os, n);
+    }
+    ASSERT_TRUE(isFile(dir/"direct.gz"));
+    ASSERT_GT(decompressed(dir/"direct").size(), 2u*backgroundWriter::pieceSize);
+
+    // An uncompressed twin of an earlier write: replaced
+    mkDir(dir/"a");
+    std::ofstream(dir/"a"/"large") << "an earlier, uncompressed write";
+
+    backgroundWriter writer;
+    {
+        const backgroundWriter::collection collecting(writer);
+        {
+            fastOFstream os
+            (
+                dir/"a"/"large", IOstream::ASCII, ver, IOstream::COMPRESSED
+            );
+            writeNumbers(os, n);
+        }
+        EXPECT_EQ(writer.collectedFailure(), "");
+
+        // Collected whole, not written as it came: nothing on the disk
+        EXPECT_FALSE(exists(dir/"a"/"large.gz"));
+        writer.submit();
+    }
+    EXPECT_EQ(writer.wait(), "");
+    EXPECT_FALSE(exists(dir/"a"/"large", false));
+    EXPECT_EQ(contents(dir/"a"/"large.gz").substr(0, 2), "\x1f\x8b");
+    EXPECT_LT(fileSize(dir/"a"/"large.gz"), fileSize(dir/"direct.gz")*3/2);
+    EXPECT_EQ(gunzipped(dir/"a"/"large.gz"), decompressed(dir/"direct"));
+}
+
+
 TEST(backgroundWriter, RemovesAFileThatDidNotFit)
 {
     // In a child process: a file-size limit of 64 kB, as a full disk. The
@@ -275,6 +385,12 @@ TEST(backgroundWriter, RemovesAFileThatDidNotFit)
     EXPECT_EXIT
     (
         std::exit(collectBeyondAFileSizeLimit(dir) ? 0 : 1),
+        ::testing::ExitedWithCode(0),
+        ""
+    );
+    EXPECT_EXIT
+    (
+        std::exit(deflateBeyondAFileSizeLimit(dir) ? 0 : 1),
         ::testing::ExitedWithCode(0),
         ""
     );

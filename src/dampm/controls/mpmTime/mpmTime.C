@@ -724,8 +724,7 @@ bool Foam::mpmTime::writeObject
     const fileName dir(timePath());
     rm(dir/"uniform"/recordName);
 
-    // (a compressed file is checked by reading it back: on this thread)
-    if (writer_ && cmp == IOstream::UNCOMPRESSED)
+    if (writer_)
     {
         writeInBackground(fmt, ver, cmp, valid);
         return true;

@@ -18,11 +18,13 @@ License
 #include <filesystem>
 #include <iostream>
 #include <unordered_set>
+#include <vector>
 
 #include <fcntl.h>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -225,6 +227,63 @@ bool Foam::backgroundWriter::closeFile
 }
 
 
+bool Foam::backgroundWriter::writeCompressed
+(
+    const std::string& path,
+    const std::string& bytes
+)
+{
+    const std::string gz(path + ".gz");
+    const int fd = removeFile(path) ? createFile(gz) : -1;
+    if (fd < 0)
+    {
+        return false;
+    }
+    z_stream z{};
+    if
+    (
+        deflateInit2
+        (
+            &z, compressionLevel, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY
+        ) != Z_OK
+    )
+    {
+        errno = ENOMEM;
+        return closeFile(fd, gz, false);
+    }
+
+    // In pieces both ways: zlib counts its input in 32 bits
+    std::vector<char> out(pieceSize);
+    std::size_t given = 0;
+    int status = Z_OK;
+    bool ok = true;
+    do
+    {
+        if (z.avail_in == 0 && given < bytes.size())
+        {
+            const std::size_t n =
+                std::min<std::size_t>(bytes.size() - given, pieceSize);
+            z.next_in =
+                reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()))
+              + given;
+            z.avail_in = uInt(n);
+            given += n;
+        }
+        z.next_out = reinterpret_cast<Bytef*>(out.data());
+        z.avail_out = uInt(out.size());
+        status = deflate(&z, given == bytes.size() ? Z_FINISH : Z_NO_FLUSH);
+        if (status == Z_STREAM_ERROR)
+        {
+            errno = EIO;
+            ok = false;
+        }
+        ok = ok && writeAll(fd, out.data(), out.size() - z.avail_out);
+    } while (ok && status != Z_STREAM_END);
+    deflateEnd(&z);
+    return closeFile(fd, gz, ok);
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 std::string Foam::backgroundWriter::perform(const std::vector<operation>& ops)
@@ -244,6 +303,17 @@ std::string Foam::backgroundWriter::perform(const std::vector<operation>& ops)
                 {
                     const std::string why(std::strerror(errno));
                     return reason("write", op.path, why);
+                }
+                break;
+            case kind::writeCompressed:
+                if
+                (
+                    !makeDir(parentOf(op.path), made)
+                 || !writeCompressed(op.path, op.data)
+                )
+                {
+                    const std::string why(std::strerror(errno));
+                    return reason("write", op.path + ".gz", why);
                 }
                 break;
             case kind::linkFile:

@@ -412,9 +412,14 @@ void Foam::fastOFstream::put(const char* data, const std::streamsize n)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::Detail::collectBuffer::collectBuffer(const std::string& path)
+Foam::Detail::collectBuffer::collectBuffer
+(
+    const std::string& path,
+    const bool whole
+)
 :
     path_(path),
+    whole_(whole),
     fd_(-1),
     toFile_(false),
     error_(0)
@@ -436,13 +441,9 @@ Foam::Detail::fastOFstreamTarget::fastOFstreamTarget
     const IOstream::compressionType compression
 )
 :
-    collector_
-    (
-        compression == IOstream::UNCOMPRESSED
-      ? backgroundWriter::collecting()
-      : nullptr
-    ),
-    buffer_(pathname),
+    collector_(backgroundWriter::collecting()),
+    compressed_(compression == IOstream::COMPRESSED),
+    buffer_(pathname, compressed_),
     memory_(&buffer_)
 {
     if (!collector_)
@@ -512,12 +513,17 @@ std::streamsize Foam::Detail::collectBuffer::xsputn
     const std::streamsize n
 )
 {
-    // Collected up to one piece; more goes to the file as it comes
+    // Collected up to one piece (or whole); more goes to the file as it
+    // comes
     if (error_)
     {
         return 0;
     }
-    if (bytes_.size() + n <= std::size_t(backgroundWriter::pieceSize))
+    if
+    (
+        whole_
+     || bytes_.size() + n <= std::size_t(backgroundWriter::pieceSize)
+    )
     {
         bytes_.append(s, n);
         return n;
@@ -616,7 +622,11 @@ Foam::fastOFstream::~fastOFstream()
     typedef backgroundWriter::operation::kind kind;
     if (!buffer_.toFile())
     {
-        collector_->add({kind::writeFile, name(), std::move(buffer_.bytes())});
+        collector_->add
+        ({
+            compressed_ ? kind::writeCompressed : kind::writeFile, name(),
+            std::move(buffer_.bytes())
+        });
         return;
     }
     // Written as it came: closed now; what failed stops the write time
