@@ -3,7 +3,8 @@
 SIGINT, SIGKILL at random moments, a full disk) leaves its last complete
 time directory intact and restarts from it into the same answer, byte for
 byte, with the cloud in binary (the default) or ASCII, the fields in ASCII
-at writePrecision 6 or binary; a restart refuses, by name, an incomplete
+at writePrecision 6 or binary, or compressed (writeCompression on); a
+restart refuses, by name, an incomplete
 directory it cannot fall back from, a complete one missing a piece, and a
 corrupt (ASCII) cloud."""
 import gzip
@@ -127,6 +128,7 @@ def compressed(c, ref, times):
     own = fc.newRun("compressedForeground", entries={"writeCompression": "on", "writeInBackground": "no"})
     status, out = c.run(own)
     fc.checkAccepted("compressedForeground", status, out)
+    check(fc.timeDirs(own) == times, "compressedForeground: the time directories %s" % times)
     text = lambda path: gzip.open(path).read() if path.endswith(".gz") else open(path, "rb").read()
     nCompressed = 0
     for t in times:
@@ -136,8 +138,11 @@ def compressed(c, ref, times):
         differ = [f for f in listed[0] if text(os.path.join(run, t, f)) != text(os.path.join(own, t, f))]
         check(not differ, "compressed: %s decompressed as the solver thread's (differ: %s)"
               % (t, differ or "none"))
+        links = [[os.stat(os.path.join(case, t, f)).st_nlink for f in listed[0]] for case in (run, own)]
+        check(links[0] == links[1], "compressed: the links of %s are the solver thread's (%s)"
+              % (t, [f for f, a, b in zip(listed[0], *links) if a != b] or "all"))
         nCompressed += sum(f.endswith(".gz") for f in listed[0])
-    print("compressed: %d files compressed in %d time directories" % (nCompressed, len(times)))
+    check(nCompressed > 0, "compressed: %d files compressed in %d time directories" % (nCompressed, len(times)))
 
 
 def foreground(c, ref, times):

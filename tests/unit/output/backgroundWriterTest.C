@@ -9,12 +9,14 @@ License
 Description
     backgroundWriter: a collected write time reaches the disk only once it
     is handed over, in the order collected (files in new directories, a
-    fastOFstream's bytes as it writes them to a file, links, a directory removed); the
-    first failure stops the rest and names the file and the reason, and a
-    file that did not fit is removed; a process that exits finishes the
-    write time handed over. A fastOFstream's file of more than one piece
-    is written as it comes, the same bytes, and its failure is the
-    collection's.
+    fastOFstream's bytes as it writes them to a file, links, a directory
+    removed); the first failure stops the rest and names the file and the
+    reason, and a file that did not fit is removed; a process that exits
+    finishes the write time handed over. A fastOFstream's uncompressed
+    file of more than one piece is written as it comes, the same bytes,
+    and its failure is the collection's; a compressed one is collected
+    whole and deflated by the thread (one whole gzip stream, the text of
+    OpenFOAM's compressed stream), replacing an uncompressed twin.
 
 \*---------------------------------------------------------------------------*/
 
@@ -135,17 +137,17 @@ std::string decompressed(const fileName& file)
     return text.str();
 }
 
-//- The text of a gzip file, decompressed strictly: "" unless it is one
-//  whole gzip stream (its trailer's checksum and length right) and nothing
-//  after it
-std::string gunzipped(const fileName& file)
+//- The text of a gzip file, decompressed strictly: false unless it is
+//  one whole gzip stream (its trailer's checksum and length right) and
+//  nothing after it
+bool gunzipped(const fileName& file, std::string& text)
 {
     std::string in = contents(file);
-    std::string text;
+    text.clear();
     z_stream z{};
-    if (in.empty() || inflateInit2(&z, 15 + 16) != Z_OK)
+    if (in.empty() || inflateInit2(&z, MAX_WBITS + 16) != Z_OK)
     {
-        return text;
+        return false;
     }
     z.next_in = reinterpret_cast<Bytef*>(&in[0]);
     z.avail_in = uInt(in.size());
@@ -160,7 +162,7 @@ std::string gunzipped(const fileName& file)
     }
     const bool whole = status == Z_STREAM_END && z.avail_in == 0;
     inflateEnd(&z);
-    return whole ? text : std::string();
+    return whole;
 }
 
 //- With a file-size limit of 64 kB: does a compressed file whose deflated
@@ -175,6 +177,7 @@ bool deflateBeyondAFileSizeLimit(const fileName& dir)
         state = 1103515245u*state + 12345u;
         c = char(state >> 24);
     }
+    std::ofstream(dir/"big") << "an earlier, uncompressed write";
     backgroundWriter writer;
     {
         const backgroundWriter::collection collecting(writer);
@@ -337,11 +340,15 @@ TEST(backgroundWriter, DeflatesACompressedFileOnItsThread)
         writeNumbers(os, n);
     }
     ASSERT_TRUE(isFile(dir/"direct.gz"));
-    ASSERT_GT(decompressed(dir/"direct").size(), 2u*backgroundWriter::pieceSize);
+    ASSERT_GT
+    (
+        decompressed(dir/"direct").size(), 2u*backgroundWriter::pieceSize
+    );
 
-    // An uncompressed twin of an earlier write: replaced
+    // Uncompressed twins of earlier writes: replaced
     mkDir(dir/"a");
     std::ofstream(dir/"a"/"large") << "an earlier, uncompressed write";
+    std::ofstream(dir/"a"/"linked") << "an earlier, uncompressed write";
 
     backgroundWriter writer;
     {
@@ -354,6 +361,11 @@ TEST(backgroundWriter, DeflatesACompressedFileOnItsThread)
             writeNumbers(os, n);
         }
         EXPECT_EQ(writer.collectedFailure(), "");
+        writer.add({kind::writeCompressed, dir/"a"/"empty", ""});
+        writer.add
+        ({
+            kind::linkFile, dir/"a"/"linked.gz", dir/"a"/"large.gz"
+        });
 
         // Collected whole, not written as it came: nothing on the disk
         EXPECT_FALSE(exists(dir/"a"/"large.gz"));
@@ -363,7 +375,15 @@ TEST(backgroundWriter, DeflatesACompressedFileOnItsThread)
     EXPECT_FALSE(exists(dir/"a"/"large", false));
     EXPECT_EQ(contents(dir/"a"/"large.gz").substr(0, 2), "\x1f\x8b");
     EXPECT_LT(fileSize(dir/"a"/"large.gz"), fileSize(dir/"direct.gz")*3/2);
-    EXPECT_EQ(gunzipped(dir/"a"/"large.gz"), decompressed(dir/"direct"));
+    std::string text;
+    EXPECT_TRUE(gunzipped(dir/"a"/"large.gz", text));
+    EXPECT_EQ(text, decompressed(dir/"direct"));
+    EXPECT_TRUE(gunzipped(dir/"a"/"empty.gz", text));
+    EXPECT_EQ(text, "");
+
+    // A compressed file linked: its uncompressed twin removed
+    EXPECT_FALSE(exists(dir/"a"/"linked", false));
+    EXPECT_EQ(inode(dir/"a"/"linked.gz"), inode(dir/"a"/"large.gz"));
 }
 
 

@@ -10,6 +10,7 @@ License
 
 #include "mpmTime.H"
 #include <cmath>
+#include <new>
 #include "argList.H"
 #include "localIOdictionary.H"
 #include "IFstream.H"
@@ -392,6 +393,11 @@ void Foam::mpmTime::writeInBackground
         catch (const error& e)
         {
             failure = e.message();
+        }
+        catch (const std::bad_alloc&)
+        {
+            // (compressed files are collected whole)
+            failure = "not enough memory to collect the write time";
         }
         if (collected)
         {
