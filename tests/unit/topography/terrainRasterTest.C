@@ -27,6 +27,8 @@ Description
 #include "fpTrapsHeld.H"
 #include "OSspecific.H"
 #include "testCase.H"
+#include "threadCount.H"
+#include "fileContents.H"
 #include <gtest/gtest.h>
 #include <ogr_srs_api.h>
 #include <cpl_conv.h>
@@ -324,6 +326,49 @@ TEST(terrainRaster, HighestOverHoldsAtMapCoordinatesAcrossACliff)
             ASSERT_LE(cliff.Z(x, y), top) << w << " " << x - line;
         }
     }
+}
+
+
+TEST(terrainRaster, AsciiWriteOfManyRowsIsOneThreadsText)
+{
+    // More rows than a batch of blocks of rows formatted in parallel (2,048)
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const label nx = 7;
+    const label ny = 4101;
+    scalarList values(nx*ny);
+    for (scalar& v : values)
+    {
+        const scalar r = u(gen);
+        v = r < 0 ? 0 : 100*r;
+    }
+    values[3*nx + 4] = notANumber;
+    const terrainRaster nodes
+    (
+        vector2D(0, 0), 0.5, 0.5, nx, ny, values, vector2D(0, 0)
+    );
+
+    std::string text[2];
+    for (const int nThreads : {1, 2})
+    {
+        const threadCount threads(nThreads);
+        const fileName file(testDir()/"manyRows.asc");
+        nodes.writeAsc(file);
+        text[nThreads - 1] = contents(file);
+    }
+    EXPECT_EQ(text[1], text[0]);
+
+    terrainRaster back
+    (
+        testDir()/"manyRows.asc", terrainRaster::noDataPolicy::fill
+    );
+    ASSERT_EQ(back.ny(), ny);
+    label same = 0;
+    for (label k = 0; k < values.size(); ++k)
+    {
+        same += k == 3*nx + 4 || back.values()[k] == values[k];
+    }
+    EXPECT_EQ(same, values.size());
 }
 
 
