@@ -226,6 +226,12 @@ TEST(backgroundWriter, WritesACollectionInOrderOnceHandedOver)
     mkDir(dir/"old"/"sub");
     std::ofstream(dir/"old"/"sub"/"f") << "old";
 
+    // Compressed twins of earlier writes: replaced
+    mkDir(dir/"a"/"c");
+    mkDir(dir/"a"/"d");
+    std::ofstream(dir/"a"/"c"/"text.gz") << "an earlier, compressed write";
+    std::ofstream(dir/"a"/"d"/"linked.gz") << "an earlier, compressed write";
+
     // The same bytes as a file written now
     {
         fastOFstream os(dir/"direct");
@@ -245,7 +251,8 @@ TEST(backgroundWriter, WritesACollectionInOrderOnceHandedOver)
         writer.add({kind::removeDir, dir/"old", ""});
 
         // Nothing on the disk before it is handed over
-        EXPECT_FALSE(exists(dir/"a"));
+        EXPECT_FALSE(exists(dir/"a"/"b"));
+        EXPECT_FALSE(exists(dir/"a"/"c"/"text", false));
         writer.submit();
     }
     EXPECT_EQ(backgroundWriter::collecting(), nullptr);
@@ -255,6 +262,8 @@ TEST(backgroundWriter, WritesACollectionInOrderOnceHandedOver)
     EXPECT_GT(contents(dir/"direct").size(), 20u);
     EXPECT_EQ(contents(dir/"a"/"c"/"text"), "hello");
     EXPECT_EQ(inode(dir/"a"/"d"/"linked"), inode(dir/"a"/"c"/"text"));
+    EXPECT_FALSE(exists(dir/"a"/"c"/"text.gz"));
+    EXPECT_FALSE(exists(dir/"a"/"d"/"linked.gz"));
     EXPECT_FALSE(exists(dir/"old"));
 }
 

@@ -331,11 +331,12 @@ TEST(terrainRaster, HighestOverHoldsAtMapCoordinatesAcrossACliff)
 
 TEST(terrainRaster, AsciiWriteOfManyRowsIsOneThreadsText)
 {
-    // More rows than a batch of blocks of rows formatted in parallel (2,048)
+    // Two batches of blocks of rows formatted in parallel and a part of one
+    // (a batch: 1,170 blocks of 8 rows of 7 values)
     std::mt19937 gen(5);
     std::uniform_real_distribution<double> u(-1, 1);
     const label nx = 7;
-    const label ny = 4101;
+    const label ny = 2*1170*8 + 5;
     scalarList values(nx*ny);
     for (scalar& v : values)
     {
@@ -369,6 +370,23 @@ TEST(terrainRaster, AsciiWriteOfManyRowsIsOneThreadsText)
         same += k == 3*nx + 4 || back.values()[k] == values[k];
     }
     EXPECT_EQ(same, values.size());
+}
+
+
+TEST(terrainRaster, AsciiWriteIsTheShortestTextOfEachValue)
+{
+    const scalar inf = std::numeric_limits<scalar>::infinity();
+    const scalarList values({0, -0.0, 1.5, notANumber, inf, 0.1});
+    const terrainRaster nodes
+    (
+        vector2D(0, 0), 1, 1, 3, 2, values, vector2D(0, 0)
+    );
+    const fileName file(testDir()/"text.asc");
+    nodes.writeAsc(file);
+    const std::string text = contents(file);
+    const std::string rows("-9999 -9999 0.1\n0 -0 1.5\n");
+    ASSERT_GE(text.size(), rows.size());
+    EXPECT_EQ(text.substr(text.size() - rows.size()), rows);
 }
 
 

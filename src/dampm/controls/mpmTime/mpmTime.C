@@ -10,7 +10,6 @@ License
 
 #include "mpmTime.H"
 #include <cmath>
-#include <new>
 #include "argList.H"
 #include "localIOdictionary.H"
 #include "IFstream.H"
@@ -393,11 +392,6 @@ void Foam::mpmTime::writeInBackground
         catch (const error& e)
         {
             failure = e.message();
-        }
-        catch (const std::bad_alloc&)
-        {
-            // (compressed files are collected whole)
-            failure = "not enough memory to collect the write time";
         }
         if (collected)
         {

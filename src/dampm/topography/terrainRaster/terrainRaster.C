@@ -930,10 +930,13 @@ void Foam::terrainRaster::writeAsc(const fileName& file) const
 
     // Rows from the north, formatted in parallel by blocks and written in
     // order (the same text as one thread's): a hazard map's rasters were a
-    // third of a large run-out's last write. Batches of blocks bound the
-    // text held
+    // third of a large run-out's last write. Blocks of a few rows, taken
+    // as threads come free (a dry row costs a character a value, a wet
+    // one a conversion), in batches of about 65,000 values, which bound
+    // the text held
     const label rowsPerBlock = 8;
-    const label blocksPerBatch = 256;
+    const label blocksPerBatch =
+        std::max(label(1), (1 << 16)/(rowsPerBlock*std::max(nx_, label(1))));
     const label nBlocks = (ny_ + rowsPerBlock - 1)/rowsPerBlock;
     std::vector<std::string> text(std::min(nBlocks, blocksPerBatch));
     for (label first = 0; first < nBlocks; first += blocksPerBatch)
