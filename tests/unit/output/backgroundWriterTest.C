@@ -25,6 +25,7 @@ Description
 #include "backgroundWriter.H"
 #include "fastOFstream.H"
 #include "IFstream.H"
+#include "particleMemory.H"
 #include "OSspecific.H"
 #include "scalarList.H"
 #include <gtest/gtest.h>
@@ -33,6 +34,7 @@ Description
 #include <fstream>
 #include <sstream>
 #include <sys/resource.h>
+#include <unistd.h>
 #include <sys/stat.h>
 #include <zlib.h>
 
@@ -189,6 +191,35 @@ bool deflateBeyondAFileSizeLimit(const fileName& dir)
         failure.find(dir/"big.gz") != std::string::npos
      && failure.find("File too large") != std::string::npos
      && !exists(dir/"big.gz") && !exists(dir/"big", false);
+}
+
+//- A write time handed over while no memory is left to map: the writer's
+//  thread fails to allocate, and the solvers' out-of-memory handler either
+//  ends the process from that thread (a FatalError, exit code 1) or, with
+//  errors thrown, the write time fails: exit code 2 when it says so
+void runOutOfMemoryOnTheWritersThread(const fileName& dir, const bool thrown)
+{
+    particleMemory::exitOnOutOfMemory();
+    if (!thrown)
+    {
+        FatalError.dontThrowExceptions();
+    }
+    backgroundWriter* writer = new backgroundWriter();
+    {
+        const backgroundWriter::collection collecting(*writer);
+        writer->add({kind::writeCompressed, dir/"small", "text"});
+
+        // No address space beyond what the process has mapped: the
+        // thread's buffer of a piece (256 kB, mapped on its own) fails
+        long pages = 0;
+        std::ifstream("/proc/self/statm") >> pages;
+        const rlim_t limit = rlim_t(pages)*::sysconf(_SC_PAGESIZE);
+        const rlimit lim{limit, limit};
+        ::setrlimit(RLIMIT_AS, &lim);
+        writer->submit();
+    }
+    const std::string failure = writer->wait();
+    std::exit(failure.find("out of memory") != std::string::npos ? 2 : 0);
 }
 
 //- Hand nFiles files and a record over, then exit with code
@@ -421,6 +452,29 @@ TEST(backgroundWriter, RemovesAFileThatDidNotFit)
     (
         std::exit(deflateBeyondAFileSizeLimit(dir) ? 0 : 1),
         ::testing::ExitedWithCode(0),
+        ""
+    );
+}
+
+
+TEST(backgroundWriter, EndsWhenItsThreadRunsOutOfMemory)
+{
+    // The process's exit, from the writer's thread, must not wait for
+    // that thread
+    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir);
+    EXPECT_EXIT
+    (
+        runOutOfMemoryOnTheWritersThread(dir, false),
+        ::testing::ExitedWithCode(1),
+        "out of memory"
+    );
+    EXPECT_EXIT
+    (
+        runOutOfMemoryOnTheWritersThread(dir, true),
+        ::testing::ExitedWithCode(2),
         ""
     );
 }

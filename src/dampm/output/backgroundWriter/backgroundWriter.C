@@ -369,7 +369,20 @@ void Foam::backgroundWriter::serve()
         std::vector<operation> ops(std::move(handedOver_));
         handedOver_.clear();
         lock.unlock();
-        const std::string failure = perform(ops);
+        std::string failure;
+        try
+        {
+            failure = perform(ops);
+        }
+        catch (...)
+        {
+            // A failed allocation, as the out-of-memory handler throws it
+            // while the solver's thread has errors thrown (otherwise the
+            // handler ends the process, see finishAtExit)
+            failure =
+                "cannot write the time directory: an allocation failed on"
+                " the writer's thread (out of memory)";
+        }
         lock.lock();
         failure_ = failure;
         busy_ = false;
@@ -380,7 +393,9 @@ void Foam::backgroundWriter::serve()
 
 void Foam::backgroundWriter::finishAtExit()
 {
-    if (live_)
+    // Not on the writer's own thread (the out-of-memory handler's exit):
+    // it would wait for itself
+    if (live_ && std::this_thread::get_id() != live_->thread_.get_id())
     {
         const std::string failure = live_->wait();
         if (!failure.empty())
