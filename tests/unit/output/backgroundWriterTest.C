@@ -34,8 +34,8 @@ Description
 #include <fstream>
 #include <sstream>
 #include <sys/resource.h>
-#include <unistd.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 
 using namespace Foam;

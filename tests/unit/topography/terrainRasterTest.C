@@ -10,15 +10,16 @@ Description
     terrainRaster: ESRI ASCII grids in both header forms (spaces, tabs,
     CRLF) read with the north row first; a planar terrain interpolated
     exactly with its exact gradient; local coordinates and clamping; ASCII
-    and GeoTIFF round trips, the two formats of one raster read alike, and
-    GDAL's ESRI driver agreeing on valid grids but accepting bad ones (why
-    the ESRI reader is our own); the NODATA policies; every malformed file
-    refused with an error that names the file and the keyword; values that
-    are not decimal numbers (hex, trailing characters), out of range or
-    beyond the caller's bound refused with their line, under the solvers'
-    floating-point traps; NaN as NODATA in both formats, a GeoTIFF's read
-    under the traps; NODATA as zero keeping a block's volume; the real
-    hillsideKot600m.asc.
+    and GeoTIFF round trips, an ASCII grid written on 1 and 2 threads the
+    same text (each value's shortest text), the two formats of one raster
+    read alike, and GDAL's ESRI driver agreeing on valid grids but accepting
+    bad ones (why the ESRI reader is our own); the NODATA policies; every
+    malformed file refused with an error that names the file and the
+    keyword; values that are not decimal numbers (hex, trailing characters),
+    out of range or beyond the caller's bound refused with their line, under
+    the solvers' floating-point traps; NaN as NODATA in both formats, a
+    GeoTIFF's read under the traps; NODATA as zero keeping a block's volume;
+    the real hillsideKot600m.asc.
 
 \*---------------------------------------------------------------------------*/
 
