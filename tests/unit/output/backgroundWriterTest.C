@@ -16,7 +16,9 @@ Description
     file of more than one piece is written as it comes, the same bytes,
     and its failure is the collection's; a compressed one is collected
     whole and deflated by the thread (one whole gzip stream, the text of
-    OpenFOAM's compressed stream), replacing an uncompressed twin.
+    OpenFOAM's compressed stream), replacing an uncompressed twin, or,
+    beyond 16 MB, deflated as it comes; a process whose writer's thread
+    runs out of memory ends, and does not wait for that thread.
 
 \*---------------------------------------------------------------------------*/
 
@@ -95,10 +97,11 @@ void writeNumbers(Ostream& os, const label n)
     os  << nl;
 }
 
-//- With a file-size limit of 64 kB: does a fastOFstream of 1 MB,
-//  collected, go bad, with its failure (named, the reason) collected and
-//  handed over, and the file removed?
-bool collectBeyondAFileSizeLimit(const fileName& dir)
+//- With a file-size limit of 64 kB: does a fastOFstream of 1 MB, or a
+//  compressed one of 24 MB (more than is collected whole), collected, go
+//  bad, with its failure (named, the reason) collected and handed over,
+//  and the file removed?
+bool collectBeyondAFileSizeLimit(const fileName& dir, const bool compressed)
 {
     limitFileSize();
     backgroundWriter writer;
@@ -108,8 +111,12 @@ bool collectBeyondAFileSizeLimit(const fileName& dir)
         const backgroundWriter::collection collecting(writer);
         try
         {
-            fastOFstream os(dir/"big");
-            writeNumbers(os, 50000);
+            fastOFstream os
+            (
+                dir/"big", IOstream::ASCII, IOstream::currentVersion,
+                compressed ? IOstream::COMPRESSED : IOstream::UNCOMPRESSED
+            );
+            writeNumbers(os, compressed ? 2000000 : 50000);
             os.flush();
             bad = !os.good();
         }
@@ -220,6 +227,16 @@ void runOutOfMemoryOnTheWritersThread(const fileName& dir, const bool thrown)
     }
     const std::string failure = writer->wait();
     std::exit(failure.find("out of memory") != std::string::npos ? 2 : 0);
+}
+
+//- An empty scratch directory with n numbers written now into direct
+fileName freshWithNumbers(const label n)
+{
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    fastOFstream os(dir/"direct");
+    writeNumbers(os, n);
+    return dir;
 }
 
 //- Hand nFiles files and a record over, then exit with code
@@ -334,13 +351,8 @@ TEST(backgroundWriter, StopsAtTheFirstFailureNamingTheFileAndWhy)
 
 TEST(backgroundWriter, WritesALargeFileAsItComes)
 {
-    const fileName dir(scratchDir("backgroundWriter"));
-    rmDir(dir, true);
     const label n = 50000;
-    {
-        fastOFstream os(dir/"direct");
-        writeNumbers(os, n);
-    }
+    const fileName dir(freshWithNumbers(n));
     ASSERT_GT(fileSize(dir/"direct"), 2*backgroundWriter::pieceSize);
 
     backgroundWriter writer;
@@ -427,6 +439,43 @@ TEST(backgroundWriter, DeflatesACompressedFileOnItsThread)
 }
 
 
+TEST(backgroundWriter, DeflatesALargeCompressedFileAsItComes)
+{
+    // More than is collected whole: deflated on this thread as it comes,
+    // the memory held bounded
+    const label n = 2000000;
+    const fileName dir(freshWithNumbers(n));
+    const std::string direct = contents(dir/"direct");
+    ASSERT_GT(direct.size(), Detail::collectBuffer::wholeSize);
+    mkDir(dir/"a");
+    std::ofstream(dir/"a"/"large") << "an earlier, uncompressed write";
+
+    backgroundWriter writer;
+    std::string text;
+    {
+        const backgroundWriter::collection collecting(writer);
+        {
+            fastOFstream os
+            (
+                dir/"a"/"large", IOstream::ASCII, IOstream::currentVersion,
+                IOstream::COMPRESSED
+            );
+            writeNumbers(os, n);
+        }
+        EXPECT_EQ(writer.collectedFailure(), "");
+
+        // Whole on the disk before the hand-over, its twin removed
+        EXPECT_TRUE(gunzipped(dir/"a"/"large.gz", text));
+        EXPECT_TRUE(text == direct);
+        EXPECT_FALSE(exists(dir/"a"/"large", false));
+        writer.submit();
+    }
+    EXPECT_EQ(writer.wait(), "");
+    EXPECT_TRUE(gunzipped(dir/"a"/"large.gz", text));
+    EXPECT_TRUE(text == direct);
+}
+
+
 TEST(backgroundWriter, RemovesAFileThatDidNotFit)
 {
     // In a child process: a file-size limit of 64 kB, as a full disk. The
@@ -442,12 +491,15 @@ TEST(backgroundWriter, RemovesAFileThatDidNotFit)
         ::testing::ExitedWithCode(0),
         ""
     );
-    EXPECT_EXIT
-    (
-        std::exit(collectBeyondAFileSizeLimit(dir) ? 0 : 1),
-        ::testing::ExitedWithCode(0),
-        ""
-    );
+    for (const bool compressed : {false, true})
+    {
+        EXPECT_EXIT
+        (
+            std::exit(collectBeyondAFileSizeLimit(dir, compressed) ? 0 : 1),
+            ::testing::ExitedWithCode(0),
+            ""
+        ) << (compressed ? "compressed" : "uncompressed");
+    }
     EXPECT_EXIT
     (
         std::exit(deflateBeyondAFileSizeLimit(dir) ? 0 : 1),

@@ -20,6 +20,8 @@ License
 #include <cstring>
 #include <limits>
 #include <string>
+#include <unistd.h>
+#include <zlib.h>
 
 // * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -421,6 +423,7 @@ Foam::Detail::collectBuffer::collectBuffer
     path_(path),
     whole_(whole),
     fd_(-1),
+    gz_(nullptr),
     toFile_(false),
     error_(0)
 {}
@@ -431,6 +434,11 @@ Foam::Detail::collectBuffer::~collectBuffer()
     if (fd_ >= 0)
     {
         backgroundWriter::closeFile(fd_, path_, false);
+    }
+    if (gz_)
+    {
+        gzclose(gz_);
+        ::unlink((path_ + ".gz").c_str());
     }
 }
 
@@ -468,6 +476,52 @@ Foam::Detail::fastOFstreamTarget::~fastOFstreamTarget()
 {}
 
 
+void Foam::Detail::collectBuffer::openFile()
+{
+    if (!whole_)
+    {
+        fd_ = backgroundWriter::createFile(path_);
+        return;
+    }
+    // At the writer's level (zlib's fastest), as gzip
+    const int fd = backgroundWriter::createFile(path_ + ".gz");
+    gz_ = fd < 0 ? nullptr : gzdopen(fd, "wb1");
+    if (fd >= 0 && !gz_)
+    {
+        ::close(fd);
+        ::unlink((path_ + ".gz").c_str());
+        errno = ENOMEM;
+    }
+}
+
+
+bool Foam::Detail::collectBuffer::deflateAll
+(
+    gzFile_s* gz,
+    const char* s,
+    const std::streamsize n
+)
+{
+    // In pieces: zlib counts in 32 bits
+    const std::streamsize piece = backgroundWriter::pieceSize;
+    for (std::streamsize done = 0; done < n; done += piece)
+    {
+        const unsigned m = unsigned(std::min(n - done, piece));
+        if (gzwrite(gz, s + done, m) != int(m))
+        {
+            int status = Z_OK;
+            gzerror(gz, &status);
+            if (status != Z_ERRNO)
+            {
+                errno = EIO;
+            }
+            return false;
+        }
+    }
+    return true;
+}
+
+
 bool Foam::Detail::collectBuffer::writeOut
 (
     const char* s,
@@ -479,11 +533,15 @@ bool Foam::Detail::collectBuffer::writeOut
         toFile_ = true;
         if (backgroundWriter::makeParent(path_))
         {
-            fd_ = backgroundWriter::createFile(path_);
+            openFile();
         }
     }
     const bool ok =
-        fd_ >= 0
+        whole_
+      ? gz_
+     && deflateAll(gz_, bytes_.data(), bytes_.size())
+     && deflateAll(gz_, s, n)
+      : fd_ >= 0
      && backgroundWriter::writeAll(fd_, bytes_.data(), bytes_.size())
      && backgroundWriter::writeAll(fd_, s, n);
     bytes_.clear();
@@ -513,17 +571,15 @@ std::streamsize Foam::Detail::collectBuffer::xsputn
     const std::streamsize n
 )
 {
-    // Collected up to one piece (or whole); more goes to the file as it
-    // comes
+    // Collected up to one piece (a compressed file up to wholeSize); more
+    // goes to the file as it comes
     if (error_)
     {
         return 0;
     }
-    if
-    (
-        whole_
-     || bytes_.size() + n <= std::size_t(backgroundWriter::pieceSize)
-    )
+    const std::size_t most =
+        whole_ ? wholeSize : std::size_t(backgroundWriter::pieceSize);
+    if (bytes_.size() + n <= most)
     {
         bytes_.append(s, n);
         return n;
@@ -540,6 +596,21 @@ int Foam::Detail::collectBuffer::sync()
 
 std::string Foam::Detail::collectBuffer::close()
 {
+    if (gz_)
+    {
+        // Deflated as it came: the rest, then the stream's end
+        const bool written = !error_ && sync() == 0;
+        gzFile_s* gz = gz_;
+        gz_ = nullptr;
+        errno = 0;
+        if (gzclose(gz) != Z_OK || !written)
+        {
+            const int why = error_ ? error_ : (errno ? errno : EIO);
+            ::unlink((path_ + ".gz").c_str());
+            return std::strerror(why);
+        }
+        return "";
+    }
     if (fd_ < 0)
     {
         return error_ ? std::strerror(error_) : "";
