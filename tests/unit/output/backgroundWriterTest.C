@@ -229,6 +229,17 @@ void runOutOfMemoryOnTheWritersThread(const fileName& dir, const bool thrown)
     std::exit(failure.find("out of memory") != std::string::npos ? 2 : 0);
 }
 
+//- An empty scratch directory for tests in child processes, each a new
+//  process (threadsafe): OpenMP's threads do not survive a fork
+fileName childProcessDir()
+{
+    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
+    const fileName dir(scratchDir("backgroundWriter"));
+    rmDir(dir, true);
+    mkDir(dir);
+    return dir;
+}
+
 //- An empty scratch directory with n numbers written now into direct
 fileName freshWithNumbers(const label n)
 {
@@ -478,13 +489,8 @@ TEST(backgroundWriter, DeflatesALargeCompressedFileAsItComes)
 
 TEST(backgroundWriter, RemovesAFileThatDidNotFit)
 {
-    // In a child process: a file-size limit of 64 kB, as a full disk. The
-    // child a new process (threadsafe): OpenMP's threads do not survive a
-    // fork
-    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
-    const fileName dir(scratchDir("backgroundWriter"));
-    rmDir(dir, true);
-    mkDir(dir);
+    // In a child process: a file-size limit of 64 kB, as a full disk
+    const fileName dir(childProcessDir());
     EXPECT_EXIT
     (
         std::exit(writeBeyondAFileSizeLimit(dir) ? 0 : 1),
@@ -513,10 +519,7 @@ TEST(backgroundWriter, EndsWhenItsThreadRunsOutOfMemory)
 {
     // The process's exit, from the writer's thread, must not wait for
     // that thread
-    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
-    const fileName dir(scratchDir("backgroundWriter"));
-    rmDir(dir, true);
-    mkDir(dir);
+    const fileName dir(childProcessDir());
     EXPECT_EXIT
     (
         runOutOfMemoryOnTheWritersThread(dir, false),
@@ -534,9 +537,7 @@ TEST(backgroundWriter, EndsWhenItsThreadRunsOutOfMemory)
 
 TEST(backgroundWriter, FinishesTheWriteHandedOverWhenTheProcessExits)
 {
-    const fileName dir(scratchDir("backgroundWriter"));
-    rmDir(dir, true);
-    mkDir(dir);
+    const fileName dir(childProcessDir());
     const label nFiles = 2000;
     const std::string bytes(1 << 12, 'x');
     EXPECT_EXIT

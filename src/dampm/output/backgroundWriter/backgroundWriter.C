@@ -133,68 +133,17 @@ bool readFile(const std::string& path, std::string& bytes)
 }
 
 
-// A new file gz holding the bytes deflated, as gzip. At zlib's fastest
-// level: the thread shares the cores with the solver's, and at its default
-// level (OpenFOAM's OFstream's) a run of 2 threads took as long as with its
-// files deflated and checked on the solver's thread; the files are about a
-// tenth larger
+// A new compressed file gz holding the bytes
 bool deflateFile(const std::string& gz, const std::string& bytes)
 {
-    const int fd = Foam::backgroundWriter::createFile(gz);
-    if (fd < 0)
-    {
-        return false;
-    }
-    // A gzip wrapper (+16), as OpenFOAM's gzstream writes; zlib's default
-    // memory level (8)
-    z_stream z{};
-    const int init =
-        deflateInit2
+    gzFile_s* f = Foam::backgroundWriter::createCompressed(gz);
+    return
+        f
+     && Foam::backgroundWriter::closeCompressed
         (
-            &z, Z_BEST_SPEED, Z_DEFLATED, MAX_WBITS + 16, 8, Z_DEFAULT_STRATEGY
+            f, gz,
+            Foam::backgroundWriter::deflateAll(f, bytes.data(), bytes.size())
         );
-    if (init != Z_OK)
-    {
-        errno = init == Z_MEM_ERROR ? ENOMEM : EINVAL;
-        return Foam::backgroundWriter::closeFile(fd, gz, false);
-    }
-
-    // In pieces both ways: zlib counts its input in 32 bits
-    const std::size_t piece = Foam::backgroundWriter::pieceSize;
-    std::vector<char> out(piece);
-    std::size_t given = 0;
-    int status = Z_OK;
-    bool ok = true;
-    do
-    {
-        if (z.avail_in == 0 && given < bytes.size())
-        {
-            const std::size_t n = std::min(bytes.size() - given, piece);
-            z.next_in =
-                reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()))
-              + given;
-            z.avail_in = uInt(n);
-            given += n;
-        }
-        z.next_out = reinterpret_cast<Bytef*>(out.data());
-        z.avail_out = uInt(out.size());
-        status = deflate(&z, given == bytes.size() ? Z_FINISH : Z_NO_FLUSH);
-        if (status == Z_STREAM_ERROR)
-        {
-            errno = EINVAL;
-            ok = false;
-        }
-        ok =
-            ok
-         && Foam::backgroundWriter::writeAll
-            (
-                fd, out.data(), out.size() - z.avail_out
-            );
-    } while (ok && status != Z_STREAM_END);
-    const int err = errno;
-    deflateEnd(&z);
-    errno = err;
-    return Foam::backgroundWriter::closeFile(fd, gz, ok);
 }
 
 
@@ -296,6 +245,68 @@ bool Foam::backgroundWriter::closeFile
     // which says why the run stops
     const int why = written ? errno : err;
     ::unlink(path.c_str());
+    errno = why;
+    return false;
+}
+
+
+gzFile_s* Foam::backgroundWriter::createCompressed(const std::string& gz)
+{
+    const int fd = createFile(gz);
+    gzFile_s* f = fd < 0 ? nullptr : gzdopen(fd, "wb1");
+    if (fd >= 0 && !f)
+    {
+        closeFile(fd, gz, false);
+        errno = ENOMEM;
+    }
+    return f;
+}
+
+
+bool Foam::backgroundWriter::deflateAll
+(
+    gzFile_s* f,
+    const char* data,
+    const std::size_t n
+)
+{
+    // In pieces: zlib counts in 32 bits
+    const std::size_t piece = pieceSize;
+    for (std::size_t done = 0; done < n; done += piece)
+    {
+        const unsigned m = unsigned(std::min(n - done, piece));
+        if (gzwrite(f, data + done, m) != int(m))
+        {
+            int status = Z_OK;
+            gzerror(f, &status);
+            if (status != Z_ERRNO)
+            {
+                errno = EIO;
+            }
+            return false;
+        }
+    }
+    return true;
+}
+
+
+bool Foam::backgroundWriter::closeCompressed
+(
+    gzFile_s* f,
+    const std::string& gz,
+    const bool written
+)
+{
+    // The stream's end deflated and written, the file closed
+    const int err = errno;
+    errno = 0;
+    const bool closed = gzclose(f) == Z_OK;
+    if (written && closed)
+    {
+        return true;
+    }
+    const int why = !written ? err : (errno ? errno : EIO);
+    ::unlink(gz.c_str());
     errno = why;
     return false;
 }

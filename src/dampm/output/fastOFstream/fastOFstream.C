@@ -20,8 +20,6 @@ License
 #include <cstring>
 #include <limits>
 #include <string>
-#include <unistd.h>
-#include <zlib.h>
 
 // * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -417,11 +415,11 @@ void Foam::fastOFstream::put(const char* data, const std::streamsize n)
 Foam::Detail::collectBuffer::collectBuffer
 (
     const std::string& path,
-    const bool whole
+    const bool compressed
 )
 :
     path_(path),
-    whole_(whole),
+    compressed_(compressed),
     fd_(-1),
     gz_(nullptr),
     toFile_(false),
@@ -437,8 +435,7 @@ Foam::Detail::collectBuffer::~collectBuffer()
     }
     if (gz_)
     {
-        gzclose(gz_);
-        ::unlink((path_ + ".gz").c_str());
+        backgroundWriter::closeCompressed(gz_, path_ + ".gz", false);
     }
 }
 
@@ -450,8 +447,7 @@ Foam::Detail::fastOFstreamTarget::fastOFstreamTarget
 )
 :
     collector_(backgroundWriter::collecting()),
-    compressed_(compression == IOstream::COMPRESSED),
-    buffer_(pathname, compressed_),
+    buffer_(pathname, compression == IOstream::COMPRESSED),
     memory_(&buffer_)
 {
     if (!collector_)
@@ -476,52 +472,6 @@ Foam::Detail::fastOFstreamTarget::~fastOFstreamTarget()
 {}
 
 
-void Foam::Detail::collectBuffer::openFile()
-{
-    if (!whole_)
-    {
-        fd_ = backgroundWriter::createFile(path_);
-        return;
-    }
-    // At the writer's level (zlib's fastest), as gzip
-    const int fd = backgroundWriter::createFile(path_ + ".gz");
-    gz_ = fd < 0 ? nullptr : gzdopen(fd, "wb1");
-    if (fd >= 0 && !gz_)
-    {
-        ::close(fd);
-        ::unlink((path_ + ".gz").c_str());
-        errno = ENOMEM;
-    }
-}
-
-
-bool Foam::Detail::collectBuffer::deflateAll
-(
-    gzFile_s* gz,
-    const char* s,
-    const std::streamsize n
-)
-{
-    // In pieces: zlib counts in 32 bits
-    const std::streamsize piece = backgroundWriter::pieceSize;
-    for (std::streamsize done = 0; done < n; done += piece)
-    {
-        const unsigned m = unsigned(std::min(n - done, piece));
-        if (gzwrite(gz, s + done, m) != int(m))
-        {
-            int status = Z_OK;
-            gzerror(gz, &status);
-            if (status != Z_ERRNO)
-            {
-                errno = EIO;
-            }
-            return false;
-        }
-    }
-    return true;
-}
-
-
 bool Foam::Detail::collectBuffer::writeOut
 (
     const char* s,
@@ -533,14 +483,22 @@ bool Foam::Detail::collectBuffer::writeOut
         toFile_ = true;
         if (backgroundWriter::makeParent(path_))
         {
-            openFile();
+            // (a compressed file at the writer's level)
+            if (compressed_)
+            {
+                gz_ = backgroundWriter::createCompressed(path_ + ".gz");
+            }
+            else
+            {
+                fd_ = backgroundWriter::createFile(path_);
+            }
         }
     }
     const bool ok =
-        whole_
+        compressed_
       ? gz_
-     && deflateAll(gz_, bytes_.data(), bytes_.size())
-     && deflateAll(gz_, s, n)
+     && backgroundWriter::deflateAll(gz_, bytes_.data(), bytes_.size())
+     && backgroundWriter::deflateAll(gz_, s, n)
       : fd_ >= 0
      && backgroundWriter::writeAll(fd_, bytes_.data(), bytes_.size())
      && backgroundWriter::writeAll(fd_, s, n);
@@ -578,7 +536,7 @@ std::streamsize Foam::Detail::collectBuffer::xsputn
         return 0;
     }
     const std::size_t most =
-        whole_ ? wholeSize : std::size_t(backgroundWriter::pieceSize);
+        compressed_ ? wholeSize : std::size_t(backgroundWriter::pieceSize);
     if (bytes_.size() + n <= most)
     {
         bytes_.append(s, n);
@@ -602,12 +560,12 @@ std::string Foam::Detail::collectBuffer::close()
         const bool written = !error_ && sync() == 0;
         gzFile_s* gz = gz_;
         gz_ = nullptr;
-        errno = 0;
-        if (gzclose(gz) != Z_OK || !written)
+        if
+        (
+            !backgroundWriter::closeCompressed(gz, path_ + ".gz", written)
+        )
         {
-            const int why = error_ ? error_ : (errno ? errno : EIO);
-            ::unlink((path_ + ".gz").c_str());
-            return std::strerror(why);
+            return std::strerror(error_ ? error_ : errno);
         }
         return "";
     }
@@ -695,7 +653,8 @@ Foam::fastOFstream::~fastOFstream()
     {
         collector_->add
         ({
-            compressed_ ? kind::writeCompressed : kind::writeFile, name(),
+            buffer_.compressed() ? kind::writeCompressed : kind::writeFile,
+            name(),
             std::move(buffer_.bytes())
         });
         return;
