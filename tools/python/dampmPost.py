@@ -53,7 +53,9 @@ class _FoamFile:
             self.data = f.read()
         self.body = self.data.index(b"}") + 1
         header = self.data[:self.body].decode("latin-1")
-        self.binary = re.search(r"format\s+binary\s*;", header) is not None
+        m = re.search(r"format\s+(\w+)\s*;", header)
+        self.format = m.group(1) if m else None
+        self.binary = self.format == "binary"
         m = re.search(r"class\s+([\w<>]+)\s*;", header)
         self.cls = m.group(1).lower() if m else ""
         arch = re.search(r"label\s*=\s*(\d+)", header)
@@ -100,6 +102,12 @@ class _FoamFile:
         dtype = self.label if "label" in self.cls else "<f8"
         values = np.frombuffer(self.data, dtype=dtype, count=n * k, offset=m.end())
         return n, values.astype(float)
+
+
+def file_format(path):
+    """The format an OpenFOAM file's header names: 'ascii' or 'binary'
+    (None: none named)."""
+    return _FoamFile(path).format
 
 
 def read_points(case):
