@@ -66,7 +66,7 @@ TEST(barrierMonitor, ForceOfEachStepAndItsPeakWithTime)
     };
     for (const auto& s : steps)
     {
-        monitor.execute(s.F, noNodes, 0, s.t);
+        monitor.execute(s.F, noNodes, nodeBox(), 0, s.t);
         EXPECT_EQ(monitor.force(), s.F) << s.t;
         EXPECT_EQ(monitor.peakForce(), s.peak) << s.t;
         EXPECT_EQ(monitor.peakTime(), s.peakTime) << s.t;
@@ -97,7 +97,12 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
     hold(3, 4, 1);
     hold(2, 5, 1);
     hold(6, 6, 1);
-    probe.wall().execute(grid, massTol, 0.1);
+    nodeBox all;
+    for (int d = 0; d < 3; ++d)
+    {
+        all.hi[d] = g.nNodesDir[d];
+    }
+    probe.wall().execute(grid, all, massTol, 0.1);
     const barrierMonitor& monitor = probe.wall().monitor();
     constexpr double tol = 1e-15; // node coordinates' round-off
     EXPECT_NEAR(monitor.runUp(), 0.8, tol);
@@ -105,13 +110,23 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
     // Only x = 0.5, z = 0.2 holds flow now
     grid.mass.assign(grid.mass.size(), 0);
     hold(5, 1, 1);
-    probe.wall().execute(grid, massTol, 0.2);
+    probe.wall().execute(grid, all, massTol, 0.2);
     EXPECT_NEAR(monitor.runUp(), 0.2, tol);
     EXPECT_NEAR(monitor.maxRunUp(), 0.8, tol);
+    // The same from the flow's box: that node's
+    nodeBox flow;
+    const gridGeometry::index ijk[3] = {5, 4, 1};
+    for (int d = 0; d < 3; ++d)
+    {
+        flow.lo[d] = ijk[d] + gridGeometry::nGhost;
+        flow.hi[d] = flow.lo[d] + 1;
+    }
+    probe.wall().execute(grid, flow, massTol, 0.2);
+    EXPECT_NEAR(monitor.runUp(), 0.2, tol);
 
     // Below the mass tolerance: none
     hold(5, 1, 0.5*massTol);
-    probe.wall().execute(grid, massTol, 0.3);
+    probe.wall().execute(grid, all, massTol, 0.3);
     EXPECT_EQ(monitor.runUp(), -GREAT);
     EXPECT_NEAR(monitor.maxRunUp(), 0.8, tol);
 }

@@ -21,12 +21,17 @@ Description
     - on the domain's walls the node sums hold the flow's mirror images: a
       node on one wall counts half its momentum change in the force, on two
       a quarter, a ghost node beyond a wall none; its velocity is set all
-      the same.
+      the same;
+    - the blocks of contact nodes outside the flow's box are skipped: the
+      force, the velocities and the node pressure are those of a pass over
+      every contact node, bit for bit, also after the flow has left a
+      block.
 
 \*---------------------------------------------------------------------------*/
 
 #include "barrierProbe.H"
 #include "OStringStream.H"
+#include "orderedSums.H"
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -186,3 +191,89 @@ TEST(nodeContact, NodeOnTheDomainsWallsCountsTheFlowsShareOfTheForce)
 
 
 // ************************************************************************* //
+
+
+// A slope of several thousand contact nodes (several blocks of the force's
+// ordered sum) and a patch of flow moving over it: with the flow's box the
+// contact gives what it gives over the whole grid, bit for bit, also the
+// node pressure of the blocks the flow has left
+TEST(nodeContact, BlocksOutsideTheFlowsBoxAreSkippedExactly)
+{
+    const gridGeometry g =
+        uniformGrid(3, {0, 0, 0}, {0.1, 0.1, 0.1}, {60, 50, 12});
+    const vector n = vector(0.2, 0.1, 1)/mag(vector(0.2, 0.1, 1));
+    OStringStream os;
+    os.precision(17);
+    os  << "type plane; point (3 2.5 0.6); normal " << n
+        << "; contact Coulomb; frictionCoefficient 0.4;";
+    // The same barrier twice: over the whole grid, and in the flow's box
+    barrierProbe whole(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
+    barrierProbe boxed(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
+    const std::vector<gridGeometry::index>& nodes =
+        whole.wall().contact().nodes();
+    ASSERT_GT(label(nodes.size()), 3*orderedSumsBlock);
+
+    nodeBox all;
+    for (int d = 0; d < 3; ++d)
+    {
+        all.hi[d] = g.nNodesDir[d];
+    }
+    // Mass moving into the slope at the contact nodes of a patch of the
+    // grid (i0 .. i0 + 7, j0 .. j0 + 5), and the patch's box
+    const auto flow = [&](mpm3dGrid& grid, const label i0, const label j0)
+    {
+        grid.resize(g.nNodes());
+        nodeBox box;
+        label k = 0;
+        for (const gridGeometry::index nodei : nodes)
+        {
+            gridGeometry::index ijk[3];
+            g.nodeIJK(nodei, ijk);
+            if
+            (
+                ijk[0] < i0 || ijk[0] >= i0 + 8
+             || ijk[1] < j0 || ijk[1] >= j0 + 6
+            )
+            {
+                continue;
+            }
+            grid.mass[nodei] = 0.3 + 0.01*(k % 7);
+            grid.vx[nodei] = 0.5 - 0.1*(k % 5);
+            grid.vy[nodei] = 0.2 + 0.05*(k % 3);
+            grid.vz[nodei] = -1.5 - 0.02*(k % 11);
+            ++k;
+            nodeBox one;
+            for (int d = 0; d < 3; ++d)
+            {
+                one.lo[d] = ijk[d] + gridGeometry::nGhost;
+                one.hi[d] = one.lo[d] + 1;
+            }
+            box.unite(one);
+        }
+        EXPECT_GT(k, 20);
+        return box;
+    };
+    const double dt = 1e-3;
+    // A patch, one far from it (the first's blocks left), then back
+    const label patches[3][2] = {{5, 5}, {45, 40}, {5, 5}};
+    for (const auto& patch : patches)
+    {
+        mpm3dGrid a, b;
+        flow(a, patch[0], patch[1]);
+        const nodeBox box = flow(b, patch[0], patch[1]);
+        whole.wall().applyContact(a, all, 0, dt);
+        boxed.wall().applyContact(b, box, 0, dt);
+        const vector Fa = whole.wall().contact().force();
+        const vector Fb = boxed.wall().contact().force();
+        EXPECT_GT(mag(Fa), 0);
+        for (int d = 0; d < 3; ++d)
+        {
+            EXPECT_EQ(Fa[d], Fb[d]);
+        }
+        EXPECT_TRUE(a.vx == b.vx && a.vy == b.vy && a.vz == b.vz);
+        std::vector<double> pa, pb;
+        whole.wall().contact().nodePressure(g, pa);
+        boxed.wall().contact().nodePressure(g, pb);
+        EXPECT_TRUE(pa == pb);
+    }
+}

@@ -125,7 +125,7 @@ TEST(mpm3dKernels, WallFoldSpansHoldEveryFoldedTripleWhole)
     const nodeBox box = p.stencilNodes(g);
 
     nodeRowSpans rows;
-    p.stencilRows(g, maxStale, rows);
+    p.stencilRows(g, rows);
     const nodeRowSpans before(rows);
     const label splitBefore = splitTriples(g, box, rows);
     EXPECT_GT(splitBefore, 0) << "the layout must split triples to test";
@@ -188,7 +188,7 @@ TEST(mpm3dKernels, WallFoldLeavesNoSumOutsideTheClearedSpans)
         particleBox = p.stencilNodes(g);
         active.unite(particleBox);
         std::swap(lastRows, rows);
-        p.stencilRows(g, maxStale, rows);
+        p.stencilRows(g, rows);
         wallFoldSpans(g, channelWalls, rows);
         activeRows.unite(lastRows, rows);
         particleBox.rows = &rows;

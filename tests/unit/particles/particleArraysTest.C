@@ -221,8 +221,8 @@ TEST(particleArrays, SortInTileOrderStoresEveryTileContiguously)
     }
 
     nodeRowSpans rows, rowsPlain;
-    p.stencilRows(g, 1, rows);
-    plain.stencilRows(g, 1, rowsPlain);
+    p.stencilRows(g, rows);
+    plain.stencilRows(g, rowsPlain);
     EXPECT_TRUE(rows.lo == rowsPlain.lo);
     EXPECT_TRUE(rows.hi == rowsPlain.hi);
 
@@ -451,8 +451,10 @@ TEST(particleArrays, BinningIsKeptWhileNearAlongEveryAxis)
 
 
 // Every node of every particle's stencil lies in its row's span, particles
-// up to maxStale cells from their bins included, and a sheet of particles
-// (a flow over a slope in a 3D box) leaves most of its box out
+// up to maxStale cells from their bins included; the spans are those of
+// the particles' own cells (not widened by the bins' staleness), and a
+// sheet of particles (a flow over a slope in a 3D box) leaves most of its
+// box out
 TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
 {
     const gridGeometry g =
@@ -479,6 +481,46 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
     }
     EXPECT_TRUE(p.sortByCell(g, tileCellOrder(g, 1), maxStale));
 
+    // Each particle's nodes c - 1 .. c + 2 per axis (c its cell), as spans
+    const auto boxSpans = [&](nodeRowSpans& b)
+    {
+        b.lo.assign(g.nNodesDir[1]*g.nNodesDir[2], g.nNodesDir[0]);
+        b.hi.assign(b.lo.size(), 0);
+        const double* xp = p.component(particleArrays::X);
+        const double* yp = p.component(particleArrays::Y);
+        const double* zp = p.component(particleArrays::Z);
+        for (label i = 0; i < n; ++i)
+        {
+            label c[3];
+            g.cellIJK(xp[i], yp[i], zp[i], c);
+            for (label k = c[2]; k < c[2] + 4; ++k)
+            {
+                for (label j = c[1]; j < c[1] + 4; ++j)
+                {
+                    const label row = j + g.nNodesDir[1]*k;
+                    b.lo[row] = std::min(b.lo[row], c[0]);
+                    b.hi[row] = std::max(b.hi[row], c[0] + 4);
+                }
+            }
+        }
+    };
+    const auto nNodes = [](const nodeRowSpans& b)
+    {
+        label total = 0;
+        for (size_t r = 0; r < b.lo.size(); ++r)
+        {
+            total += std::max(0, b.hi[r] - b.lo[r]);
+        }
+        return total;
+    };
+
+    // Sorted, no particle stale: the spans are exactly those of the boxes
+    nodeRowSpans rows, boxes;
+    p.stencilRows(g, rows);
+    boxSpans(boxes);
+    EXPECT_TRUE(rows.lo == boxes.lo);
+    EXPECT_TRUE(rows.hi == boxes.hi);
+
     // Moved by up to 0.9 cells per axis: still in their bins' reach (the
     // sort moved the columns: their addresses again)
     for (int d = 0; d < 3; ++d)
@@ -498,8 +540,7 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
     }
     EXPECT_FALSE(p.sortByCell(g, tileCellOrder(g, 1), maxStale));
 
-    nodeRowSpans rows;
-    p.stencilRows(g, maxStale, rows);
+    p.stencilRows(g, rows);
     ASSERT_EQ(label(rows.lo.size()), label(g.nNodesDir[1]*g.nNodesDir[2]));
     label outside = 0;
     for (label i = 0; i < n; ++i)
@@ -519,6 +560,21 @@ TEST(particleArrays, StencilRowSpansHoldEveryStencilNode)
         );
     }
     EXPECT_EQ(outside, 0);
+
+    // Stale particles widen only their own bin row's box: the spans hold
+    // the particles' boxes, and few nodes more
+    boxSpans(boxes);
+    for (size_t r = 0; r < rows.lo.size(); ++r)
+    {
+        if (boxes.lo[r] < boxes.hi[r])
+        {
+            EXPECT_LE(rows.lo[r], boxes.lo[r]);
+            EXPECT_GE(rows.hi[r], boxes.hi[r]);
+        }
+    }
+    std::cout << "span nodes " << nNodes(rows) << ", the particles' boxes "
+        << nNodes(boxes) << std::endl;
+    EXPECT_LT(nNodes(rows), 1.2*nNodes(boxes));
 
     // The spans cover a fraction of the particles' box of nodes
     const nodeBox box = p.stencilNodes(g);

@@ -84,6 +84,7 @@ void Foam::barrierMonitor::finishSearch
     const boundBox& bounds
 )
 {
+    nearBlocks_.build(g, nearNodes_);
     if (!measuresOvertopping())
     {
         return;
@@ -189,6 +190,7 @@ void Foam::barrierMonitor::execute
 (
     const vector& force,
     const mpm3dGrid& grid,
+    const nodeBox& active,
     const double massTol,
     const scalar t
 )
@@ -200,17 +202,27 @@ void Foam::barrierMonitor::execute
         peakTime_ = t;
     }
 
-    // Run-up: the highest node beside the barrier holding flow
+    // Run-up: the highest node beside the barrier holding flow (in the
+    // blocks of nodes within the flow's box; a maximum in any order)
     const label nn = label(nearNodes_.size());
     const gridGeometry::index* near = nearNodes_.data();
     const double* z = nearZ_.data();
+    const nodeBlockBoxes& blocks = nearBlocks_;
     double top = -GREAT;
     #pragma omp parallel for schedule(static) reduction(max:top)
-    for (label c = 0; c < nn; ++c)
+    for (label b = 0; b < blocks.size(); ++b)
     {
-        if (grid.mass[near[c]] > massTol && z[c] > top)
+        if (!blocks.overlaps(b, active))
         {
-            top = z[c];
+            continue;
+        }
+        const label last = std::min(nn, (b + 1)*orderedSumsBlock);
+        for (label c = b*orderedSumsBlock; c < last; ++c)
+        {
+            if (grid.mass[near[c]] > massTol && z[c] > top)
+            {
+                top = z[c];
+            }
         }
     }
     runUp_ = returnReduce(top, maxOp<scalar>());

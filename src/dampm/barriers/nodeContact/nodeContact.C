@@ -89,6 +89,8 @@ void Foam::nodeContact::finishSearch
 {
     normalForce_.assign(nodes_.size(), 0.0);
     share_.assign(nodes_.size(), 1.0);
+    blocks_.build(g, nodes_);
+    blockForced_.assign(blocks_.size(), false);
     // A decomposed grid's part counts the force of the nodes it owns only:
     // the processors' sums add up to the whole barrier's
     nOwned_ = 0;
@@ -225,6 +227,7 @@ void Foam::nodeContact::warnIfThin(const gridGeometry& g) const
 void Foam::nodeContact::apply
 (
     mpm3dGrid& grid,
+    const nodeBox& active,
     const double massTol,
     const double dt
 )
@@ -237,32 +240,54 @@ void Foam::nodeContact::apply
     double* fn = normalForce_.data();
     const double* share = share_.data();
     const contactCondition& condition = condition_;
-    // Force summed in a fixed order: the same on any number of threads
+    const nodeBlockBoxes& blocks = blocks_;
+    char* forced = blockForced_.data();
+    // Force summed in a fixed order: the same on any number of threads. A
+    // block of nodes outside the flow's box holds no mass and adds nothing:
+    // its sum is the zero it would have been
     double F[3], none[1];
-    orderedSums<3, 0>(nc, F, none, [&](label c, double* S, double*)
-    {
-        const gridGeometry::index n = nodes[c];
-        const double mi = grid.mass[n];
-        const double v[3] = {grid.vx[n], grid.vy[n], grid.vz[n]};
-        const double vn = v[0]*nx[c] + v[1]*ny[c] + v[2]*nz[c];
-        if (!(mi > massTol) || vn >= 0)
+    orderedBlockSums<3, 0>
+    (
+        nc, F, none,
+        [&](const label first, const label last, double* S, double*)
         {
-            fn[c] = 0;
-            return;
+            const label b = first/orderedSumsBlock;
+            if (!blocks.overlaps(b, active))
+            {
+                if (forced[b])
+                {
+                    std::fill(fn + first, fn + last, 0.0);
+                    forced[b] = false;
+                }
+                return;
+            }
+            forced[b] = true;
+            for (label c = first; c < last; ++c)
+            {
+                const gridGeometry::index n = nodes[c];
+                const double mi = grid.mass[n];
+                const double v[3] = {grid.vx[n], grid.vy[n], grid.vz[n]};
+                const double vn = v[0]*nx[c] + v[1]*ny[c] + v[2]*nz[c];
+                if (!(mi > massTol) || vn >= 0)
+                {
+                    fn[c] = 0;
+                    continue;
+                }
+                const double nrm[3] = {nx[c], ny[c], nz[c]};
+                double vt[3] = {v[0], v[1], v[2]};
+                condition.apply(nrm, vn, vt);
+                const double k = mi/dt;
+                const double kDomain = share[c]*k;
+                S[0] += kDomain*(v[0] - vt[0]);
+                S[1] += kDomain*(v[1] - vt[1]);
+                S[2] += kDomain*(v[2] - vt[2]);
+                fn[c] = -k*vn;
+                grid.vx[n] = vt[0];
+                grid.vy[n] = vt[1];
+                grid.vz[n] = vt[2];
+            }
         }
-        const double nrm[3] = {nx[c], ny[c], nz[c]};
-        double vt[3] = {v[0], v[1], v[2]};
-        condition.apply(nrm, vn, vt);
-        const double k = mi/dt;
-        const double kDomain = share[c]*k;
-        S[0] += kDomain*(v[0] - vt[0]);
-        S[1] += kDomain*(v[1] - vt[1]);
-        S[2] += kDomain*(v[2] - vt[2]);
-        fn[c] = -k*vn;
-        grid.vx[n] = vt[0];
-        grid.vy[n] = vt[1];
-        grid.vz[n] = vt[2];
-    });
+    );
 
     force_ = vector(F[0], F[1], F[2]);
 }

@@ -843,7 +843,7 @@ void Foam::mpm3dFlow::findNodes()
     }
     activeNodes_.unite(stencilNodes_);
     std::swap(lastRows_, stencilRows_);
-    particles_.stencilRows(g, schedule_.maxStale(), stencilRows_);
+    particles_.stencilRows(g, stencilRows_);
     wallFoldSpans(g, settings_.wall, stencilRows_);
     activeRows_.unite(lastRows_, stencilRows_);
     stencilNodes_.rows = &stencilRows_;
@@ -1035,7 +1035,7 @@ void Foam::mpm3dFlow::contact(const scalar dt)
 {
     for (barrier& b : barriers_)
     {
-        b.applyContact(nodes_, settings_.massTol, dt);
+        b.applyContact(nodes_, activeNodes_, settings_.massTol, dt);
     }
     for (membraneBarrier& m : membranes_)
     {
@@ -1120,7 +1120,7 @@ void Foam::mpm3dFlow::monitorBarriers(const scalar t)
 {
     for (barrier& b : barriers_)
     {
-        b.execute(nodes_, settings_.massTol, t);
+        b.execute(nodes_, activeNodes_, settings_.massTol, t);
     }
 }
 

@@ -559,7 +559,6 @@ Foam::nodeBox Foam::particleArrays::stencilNodes
 void Foam::particleArrays::stencilRows
 (
     const gridGeometry& g,
-    const label maxStale,
     nodeRowSpans& rows
 ) const
 {
@@ -568,23 +567,31 @@ void Foam::particleArrays::stencilRows
     const index nRows = g.nNodesDir[1]*g.nNodesDir[2];
     rows.lo.assign(nRows, g.nNodesDir[0]);
     rows.hi.assign(nRows, 0);
-
-    // A particle binned in cell c is within maxStale cells of it, and its
-    // stencil reaches from node c - 1 to c + 2 per axis (stencilBox)
-    const index below = maxStale + 1 - nG, above = maxStale + 2 + nG;
-    const auto clip = [](const index i, const index n)
+    const index n[3] = {g.nNodesDir[0], g.nNodesDir[1], g.nNodesDir[2]};
+    const auto clip = [](const index i, const index m)
     {
-        return i < 0 ? 0 : (i > n ? n : i);
+        return i < 0 ? 0 : (i > m ? m : i);
     };
-    // The particles of a row of cells within a tile are contiguous, sorted
-    // along x
+
+    // A particle in cell c (where it is now, not its bin: a bin may be
+    // stale by a cell or more) has its stencil within nodes c - 1 .. c + 2
+    // per axis. The particles of a bin's row of cells within a tile are
+    // contiguous: their cells' bounds (a loop that vectorises) give one
+    // box of node rows and spans, tight unless some particle is stale
+    const double* x = component(X);
+    const double* y = component(Y);
+    const double* const zOr = g.dim == 3 ? component(Z) : x;
+    const int dz = g.dim == 3 ? 2 : 0;
     const tileCellOrder& o = binOrder_;
     const index T = o.T;
     const index nt = o.nTiles[0]*o.nTiles[1]*o.nTiles[2];
     for (index t = 0; t < nt; ++t)
     {
-        const index tj = (t/o.nTiles[0]) % o.nTiles[1];
-        const index tk = t/(o.nTiles[0]*o.nTiles[1]);
+        // (A flow fills few of the grid's tiles)
+        if (binStart_[o.firstRank(t)] == binStart_[o.firstRank(t + 1)])
+        {
+            continue;
+        }
         for (index r0 = o.firstRank(t); r0 < o.firstRank(t + 1); r0 += T)
         {
             const label first = binStart_[r0];
@@ -593,27 +600,34 @@ void Foam::particleArrays::stencilRows
             {
                 continue;
             }
-            const index l = (r0 - o.firstRank(t))/T;
-            const index j = tj*T + l % T;
-            const index k = tk*T + l/T;
-            const index row0 = g.cellIndex(0, j, k);
-            const index lo = clip(cell_[first] - row0 - below, g.nNodesDir[0]);
-            const index hi =
-                clip(cell_[last - 1] - row0 + above + 1, g.nNodesDir[0]);
-            const index k0 = g.dim == 3 ? clip(k - below, g.nNodesDir[2]) : 0;
-            const index k1 =
-                g.dim == 3 ? clip(k + above + 1, g.nNodesDir[2]) : 1;
+            index lo[3] = {g.nCells[0], g.nCells[1], g.nCells[2]};
+            index hi[3] = {0, 0, 0};
+            #pragma omp simd reduction(min:lo[:3]) reduction(max:hi[:3])
+            for (label p = first; p < last; ++p)
+            {
+                const index c[3] =
+                    {g.cellDir(0, x[p]), g.cellDir(1, y[p]), g.cellDir(dz, zOr[p])};
+                for (int d = 0; d < 3; ++d)
+                {
+                    lo[d] = c[d] < lo[d] ? c[d] : lo[d];
+                    hi[d] = c[d] > hi[d] ? c[d] : hi[d];
+                }
+            }
+            // Node array indices: node c is c + nG
+            const index i0 = clip(lo[0] - 1 + nG, n[0]);
+            const index i1 = clip(hi[0] + 3 + nG, n[0]);
             // A plane slice's stencils take its one row of nodes along y
-            const index j0 = g.plane ? nG : clip(j - below, g.nNodesDir[1]);
-            const index j1 =
-                g.plane ? nG + 1 : clip(j + above + 1, g.nNodesDir[1]);
+            const index j0 = g.plane ? nG : clip(lo[1] - 1 + nG, n[1]);
+            const index j1 = g.plane ? nG + 1 : clip(hi[1] + 3 + nG, n[1]);
+            const index k0 = g.dim == 3 ? clip(lo[2] - 1 + nG, n[2]) : 0;
+            const index k1 = g.dim == 3 ? clip(hi[2] + 3 + nG, n[2]) : 1;
             for (index kk = k0; kk < k1; ++kk)
             {
                 for (index jj = j0; jj < j1; ++jj)
                 {
-                    const index r = jj + g.nNodesDir[1]*kk;
-                    rows.lo[r] = lo < rows.lo[r] ? lo : rows.lo[r];
-                    rows.hi[r] = hi > rows.hi[r] ? hi : rows.hi[r];
+                    const index r = jj + n[1]*kk;
+                    rows.lo[r] = i0 < rows.lo[r] ? i0 : rows.lo[r];
+                    rows.hi[r] = i1 > rows.hi[r] ? i1 : rows.hi[r];
                 }
             }
         }
