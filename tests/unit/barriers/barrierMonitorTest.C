@@ -13,7 +13,9 @@ Description
       magnitude so far and its time (a later equal one does not move it);
     - run-up: the highest node outside the barrier within 1.5 cells
       (0.3 m) of it that holds more than the mass tolerance, per step and
-      the highest so far; nodes farther away or inside do not count;
+      the highest so far; nodes farther away or inside do not count; the
+      same from the flow's box of nodes over a slope of several blocks of
+      nodes beside it (nodeBlockBoxes) as counted over every node;
     - overtopping along overtoppingDirection (any length): the mass of the
       particles beyond the barrier's last contact node (a box from x = 0.42
       to 0.58: its nodes at x = 0.5), plus the mass that left the domain
@@ -23,6 +25,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "barrierProbe.H"
+#include "OStringStream.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
@@ -129,6 +132,63 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
     probe.wall().execute(grid, all, massTol, 0.3);
     EXPECT_EQ(monitor.runUp(), -GREAT);
     EXPECT_NEAR(monitor.maxRunUp(), 0.8, tol);
+}
+
+
+// A slope with several blocks of nodes beside it and a patch of flow moved
+// over it: the run-up from the flow's box is the highest node beside the
+// slope holding flow, counted over every node
+TEST(barrierMonitor, RunUpFromTheFlowsBoxOverSeveralBlocks)
+{
+    const gridGeometry g =
+        uniformGrid(3, {0, 0, 0}, {0.1, 0.1, 0.1}, {60, 50, 12});
+    const vector n = vector(0.2, 0.1, 1)/mag(vector(0.2, 0.1, 1));
+    OStringStream os;
+    os.precision(17);
+    os  << "type plane; point (3 2.5 0.6); normal " << n << "; contact slip;";
+    barrierProbe probe(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
+    const double onSurface = nodeContact::surfaceTolerance(g);
+    const double near = 1.5*g.hMax();
+
+    // Mass at every node of the columns i0 .. i0 + 7, j0 .. j0 + 5
+    const label patches[3][2] = {{5, 5}, {45, 40}, {30, 20}};
+    for (const auto& patch : patches)
+    {
+        mpm3dGrid grid;
+        grid.resize(g.nNodes());
+        nodeBox box;
+        double expected = -GREAT;
+        for (label k = -1; k <= g.nCells[2] + 1; ++k)
+        {
+            for (label j = patch[1]; j < patch[1] + 6; ++j)
+            {
+                for (label i = patch[0]; i < patch[0] + 8; ++i)
+                {
+                    const gridGeometry::index nodei = g.nodeIndex(i, j, k);
+                    grid.mass[nodei] = 1;
+                    double x[3];
+                    g.nodePosition(nodei, x);
+                    const double phi = probe.distance(point(x[0], x[1], x[2]));
+                    if (phi > onSurface && phi <= near)
+                    {
+                        expected = std::max(expected, x[2]);
+                    }
+                    nodeBox one;
+                    const gridGeometry::index ijk[3] = {i, j, k};
+                    for (int d = 0; d < 3; ++d)
+                    {
+                        one.lo[d] = ijk[d] + gridGeometry::nGhost;
+                        one.hi[d] = one.lo[d] + 1;
+                    }
+                    box.unite(one);
+                }
+            }
+        }
+        ASSERT_GT(expected, -GREAT);
+        probe.wall().execute(grid, box, 1e-6, 0.1);
+        EXPECT_EQ(probe.wall().monitor().runUp(), expected)
+            << patch[0] << " " << patch[1];
+    }
 }
 
 

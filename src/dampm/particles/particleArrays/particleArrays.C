@@ -585,6 +585,38 @@ void Foam::particleArrays::stencilRows
     const tileCellOrder& o = binOrder_;
     const index T = o.T;
     const index nt = o.nTiles[0]*o.nTiles[1]*o.nTiles[2];
+    // Tiles on all threads: the rows of neighbouring tiles overlap, and a
+    // bound taken with an atomic compare-and-swap is the same whatever the
+    // order
+    const auto lower = [](int32_t* a, const int32_t v)
+    {
+        int32_t now = __atomic_load_n(a, __ATOMIC_RELAXED);
+        while
+        (
+            v < now
+         && !__atomic_compare_exchange_n
+            (
+                a, &now, v, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED
+            )
+        )
+        {}
+    };
+    const auto raise = [](int32_t* a, const int32_t v)
+    {
+        int32_t now = __atomic_load_n(a, __ATOMIC_RELAXED);
+        while
+        (
+            v > now
+         && !__atomic_compare_exchange_n
+            (
+                a, &now, v, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED
+            )
+        )
+        {}
+    };
+    int32_t* const rowLo = rows.lo.data();
+    int32_t* const rowHi = rows.hi.data();
+    #pragma omp parallel for schedule(dynamic, 16)
     for (index t = 0; t < nt; ++t)
     {
         // (A flow fills few of the grid's tiles)
@@ -626,8 +658,8 @@ void Foam::particleArrays::stencilRows
                 for (index jj = j0; jj < j1; ++jj)
                 {
                     const index r = jj + n[1]*kk;
-                    rows.lo[r] = i0 < rows.lo[r] ? i0 : rows.lo[r];
-                    rows.hi[r] = i1 > rows.hi[r] ? i1 : rows.hi[r];
+                    lower(rowLo + r, i0);
+                    raise(rowHi + r, i1);
                 }
             }
         }
