@@ -25,7 +25,6 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "barrierProbe.H"
-#include "OStringStream.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
@@ -117,14 +116,10 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
     EXPECT_NEAR(monitor.runUp(), 0.2, tol);
     EXPECT_NEAR(monitor.maxRunUp(), 0.8, tol);
     // The same from the flow's box: that node's
-    nodeBox flow;
-    const gridGeometry::index ijk[3] = {5, 4, 1};
-    for (int d = 0; d < 3; ++d)
-    {
-        flow.lo[d] = ijk[d] + gridGeometry::nGhost;
-        flow.hi[d] = flow.lo[d] + 1;
-    }
-    probe.wall().execute(grid, flow, massTol, 0.2);
+    probe.wall().execute
+    (
+        grid, g.nodeBoxOf(g.nodeIndex(5, 4, 1)), massTol, 0.2
+    );
     EXPECT_NEAR(monitor.runUp(), 0.2, tol);
 
     // Below the mass tolerance: none
@@ -140,13 +135,11 @@ TEST(barrierMonitor, RunUpIsTheHighestNodeBesideTheBarrierHoldingFlow)
 // slope holding flow, counted over every node
 TEST(barrierMonitor, RunUpFromTheFlowsBoxOverSeveralBlocks)
 {
-    const gridGeometry g =
-        uniformGrid(3, {0, 0, 0}, {0.1, 0.1, 0.1}, {60, 50, 12});
-    const vector n = vector(0.2, 0.1, 1)/mag(vector(0.2, 0.1, 1));
-    OStringStream os;
-    os.precision(17);
-    os  << "type plane; point (3 2.5 0.6); normal " << n << "; contact slip;";
-    barrierProbe probe(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
+    const gridGeometry g = slopeGrid();
+    barrierProbe probe
+    (
+        slopeText("slip"), fileName(DAMPM_TEST_MESHES), noWalls, g
+    );
     const double onSurface = nodeContact::surfaceTolerance(g);
     const double near = 1.5*g.hMax();
 
@@ -173,14 +166,7 @@ TEST(barrierMonitor, RunUpFromTheFlowsBoxOverSeveralBlocks)
                     {
                         expected = std::max(expected, x[2]);
                     }
-                    nodeBox one;
-                    const gridGeometry::index ijk[3] = {i, j, k};
-                    for (int d = 0; d < 3; ++d)
-                    {
-                        one.lo[d] = ijk[d] + gridGeometry::nGhost;
-                        one.hi[d] = one.lo[d] + 1;
-                    }
-                    box.unite(one);
+                    box.unite(g.nodeBoxOf(nodei));
                 }
             }
         }

@@ -199,16 +199,11 @@ TEST(nodeContact, NodeOnTheDomainsWallsCountsTheFlowsShareOfTheForce)
 // node pressure of the blocks the flow has left
 TEST(nodeContact, BlocksOutsideTheFlowsBoxAreSkippedExactly)
 {
-    const gridGeometry g =
-        uniformGrid(3, {0, 0, 0}, {0.1, 0.1, 0.1}, {60, 50, 12});
-    const vector n = vector(0.2, 0.1, 1)/mag(vector(0.2, 0.1, 1));
-    OStringStream os;
-    os.precision(17);
-    os  << "type plane; point (3 2.5 0.6); normal " << n
-        << "; contact Coulomb; frictionCoefficient 0.4;";
+    const gridGeometry g = slopeGrid();
+    const std::string slope = slopeText("Coulomb; frictionCoefficient 0.4");
     // The same barrier twice: over the whole grid, and in the flow's box
-    barrierProbe whole(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
-    barrierProbe boxed(os.str(), fileName(DAMPM_TEST_MESHES), noWalls, g);
+    barrierProbe whole(slope, fileName(DAMPM_TEST_MESHES), noWalls, g);
+    barrierProbe boxed(slope, fileName(DAMPM_TEST_MESHES), noWalls, g);
     const std::vector<gridGeometry::index>& nodes =
         whole.wall().contact().nodes();
     ASSERT_GT(label(nodes.size()), 3*orderedSumsBlock);
@@ -242,13 +237,7 @@ TEST(nodeContact, BlocksOutsideTheFlowsBoxAreSkippedExactly)
             grid.vy[nodei] = 0.2 + 0.05*(k % 3);
             grid.vz[nodei] = -1.5 - 0.02*(k % 11);
             ++k;
-            nodeBox one;
-            for (int d = 0; d < 3; ++d)
-            {
-                one.lo[d] = ijk[d] + gridGeometry::nGhost;
-                one.hi[d] = one.lo[d] + 1;
-            }
-            box.unite(one);
+            box.unite(g.nodeBoxOf(nodei));
         }
         EXPECT_GT(k, 20);
         return box;
