@@ -638,7 +638,10 @@ void Foam::particleArrays::stencilRows
             for (label p = first; p < last; ++p)
             {
                 const index c[3] =
-                    {g.cellDir(0, x[p]), g.cellDir(1, y[p]), g.cellDir(dz, zOr[p])};
+                {
+                    g.cellDir(0, x[p]), g.cellDir(1, y[p]),
+                    g.cellDir(dz, zOr[p])
+                };
                 for (int d = 0; d < 3; ++d)
                 {
                     lo[d] = c[d] < lo[d] ? c[d] : lo[d];
