@@ -587,26 +587,14 @@ void Foam::particleArrays::stencilRows
     const index nt = o.nTiles[0]*o.nTiles[1]*o.nTiles[2];
     // Tiles on all threads: the rows of neighbouring tiles overlap, and a
     // bound taken with an atomic compare-and-swap is the same whatever the
-    // order
-    const auto lower = [](int32_t* a, const int32_t v)
+    // order. Moves *a to v where v lies beyond it (by sign: -1 below, +1
+    // above)
+    const auto widen = [](int32_t* a, const int32_t v, const int sign)
     {
         int32_t now = __atomic_load_n(a, __ATOMIC_RELAXED);
         while
         (
-            v < now
-         && !__atomic_compare_exchange_n
-            (
-                a, &now, v, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED
-            )
-        )
-        {}
-    };
-    const auto raise = [](int32_t* a, const int32_t v)
-    {
-        int32_t now = __atomic_load_n(a, __ATOMIC_RELAXED);
-        while
-        (
-            v > now
+            sign*(v - now) > 0
          && !__atomic_compare_exchange_n
             (
                 a, &now, v, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED
@@ -661,8 +649,8 @@ void Foam::particleArrays::stencilRows
                 for (index jj = j0; jj < j1; ++jj)
                 {
                     const index r = jj + n[1]*kk;
-                    lower(rowLo + r, i0);
-                    raise(rowHi + r, i1);
+                    widen(rowLo + r, i0, -1);
+                    widen(rowHi + r, i1, 1);
                 }
             }
         }
