@@ -136,6 +136,7 @@ int main(int argc, char *argv[])
     }
     const string movedWhat("Columns");
     #include "reportMigration.H"
+    flow.resting().report(Info);
     timers.report(Info);
     runTime.printExecutionTime(Info);
     Info<< "End\n" << endl;

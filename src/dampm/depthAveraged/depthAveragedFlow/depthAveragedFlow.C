@@ -783,7 +783,7 @@ void Foam::depthAveragedFlow::updateGrid(const scalar dt)
     resistanceUpdate
     (
         grid_.geometry(), activeNodes_, nodes_, sides_, dt, massTol_,
-        basalActive()
+        basalActive(), resting_.nodes(grid_.geometry(), activeNodes_)
     );
 }
 
@@ -817,16 +817,21 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
     (
         g, sides_, dt, splitting_.active(), splitting_.rule(), motion
     );
-    label nRemoved = 0;
+    const uint8_t* quiet = resting_.quietCells(g);
+    label nRemoved = 0, nLeft = 0;
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
             nRemoved =
-                gridToColumns(g, kernel, nodes_.velocity.data(), advance);
+                gridToColumns
+                (
+                    g, kernel, nodes_.velocity.data(), advance, quiet, &nLeft
+                );
         }
     );
+    resting_.count(n, nLeft);
     const double* m = particles_.component(particleArrays::M);
 
     // The outflow tallied in storage order: the same on any number of
@@ -854,13 +859,39 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         rheology_->stress(modelView(), dt);
     }
     const label nSplit = splitting_.split(particles_, fields_, true);
+    wakeChanged(splitting_.parents(), n, n + nSplit);
     if (nSplit || nRemoved)
     {
         removeOutflowAndPlaceSplit(nSplit);
     }
-    migration_.migrate(particles_);
+    // The columns that arrived from other processors, appended
+    const label nBefore = particles_.size();
+    const label nGone = migration_.migrate(particles_);
+    wakeChanged({}, nBefore - nGone, particles_.size());
+    resting_.endStep(g, dt);
     prepared_ = false;
     return removed;
+}
+
+
+void Foam::depthAveragedFlow::wakeChanged
+(
+    const std::vector<label>& listed,
+    const label first,
+    const label last
+)
+{
+    const gridGeometry& g = grid_.geometry();
+    const double* x = particles_.component(particleArrays::X);
+    const double* y = particles_.component(particleArrays::Y);
+    for (const label i : listed)
+    {
+        resting_.wake(g, x[i], y[i]);
+    }
+    for (label i = first; i < last; ++i)
+    {
+        resting_.wake(g, x[i], y[i]);
+    }
 }
 
 
