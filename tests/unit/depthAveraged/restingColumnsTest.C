@@ -21,8 +21,8 @@ Description
 #include "uniformGrid.H"
 #include "restingColumns.H"
 #include "shapeKernels.H"
+#include "columnMotionArrays.H"
 #include <gtest/gtest.h>
-#include <cstring>
 #include <functional>
 #include <random>
 #include <vector>
@@ -32,23 +32,16 @@ using namespace Foam;
 namespace
 {
 
-//- The arrays S9 reads and writes
+//- Random columns four to a cell, moving, with random footprints
 struct columns
+:
+    columnMotionArrays
 {
-    std::vector<double> x, y, ux, uy, V;
-    std::vector<double> C[4], F[4];
-    std::vector<char> removal, split;
-
     columns(const gridGeometry& g, const int n, std::mt19937& gen)
     :
-        x(n), y(n), ux(n), uy(n), V(n), removal(n, 7), split(n, 7)
+        columnMotionArrays(n)
     {
         std::uniform_real_distribution<double> u(0, 1), v(-1, 1);
-        for (int k = 0; k < 4; ++k)
-        {
-            C[k].resize(n);
-            F[k].resize(n);
-        }
         const int nc = g.nCells[0]*g.nCells[1];
         for (int i = 0; i < n; ++i)
         {
@@ -73,25 +66,6 @@ struct columns
         }
     }
 
-    columnMotion motion()
-    {
-        columnMotion m;
-        m.n = int(x.size());
-        m.x = x.data();
-        m.y = y.data();
-        m.ux = ux.data();
-        m.uy = uy.data();
-        for (int k = 0; k < 4; ++k)
-        {
-            m.C[k] = C[k].data();
-            m.F[k] = F[k].data();
-        }
-        m.V = V.data();
-        m.removal = removal.data();
-        m.splitCandidate = split.data();
-        return m;
-    }
-
     //- Will column i be split: marked, and its halves inside the domain
     //  (depthAveragedSplitting::split)? A column at rest marked but not
     //  split stays so: skipped, it is not marked, to the same effect
@@ -109,25 +83,7 @@ struct columns
         {
             all = all && splits(rule, i) == o.splits(rule, i);
         }
-        return all && *this == o;
-    }
-
-    //- Every array the same, bit for bit (and the removal marks)
-    bool operator==(const columns& o) const
-    {
-        const auto same = [](const std::vector<double>& a, const auto& b)
-        {
-            return std::memcmp(a.data(), b.data(), a.size()*sizeof(double))
-                == 0;
-        };
-        bool all =
-            same(x, o.x) && same(y, o.y) && same(ux, o.ux) && same(uy, o.uy)
-         && removal == o.removal;
-        for (int k = 0; k < 4; ++k)
-        {
-            all = all && same(C[k], o.C[k]) && same(F[k], o.F[k]);
-        }
-        return all;
+        return all && sameState(o);
     }
 };
 

@@ -19,9 +19,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "uniformGrid.H"
-#include "depthAveragedKernels.H"
+#include "columnMotionArrays.H"
 #include <gtest/gtest.h>
-#include <cstring>
 #include <vector>
 
 using namespace Foam;
@@ -30,40 +29,10 @@ namespace
 {
 
 struct columns
+:
+    columnMotionArrays
 {
-    std::vector<double> x, y, ux, uy, V;
-    std::vector<double> C[4], F[4];
-    std::vector<char> removal, split;
-
-    explicit columns(const int n)
-    :
-        x(n), y(n), ux(n), uy(n), V(n, 1.0), removal(n, 7), split(n, 7)
-    {
-        for (int k = 0; k < 4; ++k)
-        {
-            C[k].assign(n, 0.0);
-            F[k].assign(n, k == 0 || k == 3 ? 0.5 : 0.0);
-        }
-    }
-
-    columnMotion motion()
-    {
-        columnMotion m;
-        m.n = int(x.size());
-        m.x = x.data();
-        m.y = y.data();
-        m.ux = ux.data();
-        m.uy = uy.data();
-        for (int k = 0; k < 4; ++k)
-        {
-            m.C[k] = C[k].data();
-            m.F[k] = F[k].data();
-        }
-        m.V = V.data();
-        m.removal = removal.data();
-        m.splitCandidate = split.data();
-        return m;
-    }
+    using columnMotionArrays::columnMotionArrays;
 
     //- Advance every column one by one; the number marked for removal
     int advanceOneByOne(const columnAdvance& a)
@@ -101,24 +70,6 @@ struct columns
             nRemoved += a(i, ux[i], uy[i], Cj);
         }
         return nRemoved;
-    }
-
-    //- Every array the same, bit for bit
-    bool operator==(const columns& o) const
-    {
-        const auto same = [](const std::vector<double>& a, const auto& b)
-        {
-            return std::memcmp(a.data(), b.data(), a.size()*sizeof(double))
-                == 0;
-        };
-        bool all =
-            same(x, o.x) && same(y, o.y) && same(ux, o.ux) && same(uy, o.uy)
-         && removal == o.removal && split == o.split;
-        for (int k = 0; k < 4; ++k)
-        {
-            all = all && same(C[k], o.C[k]) && same(F[k], o.F[k]);
-        }
-        return all;
     }
 };
 
