@@ -818,7 +818,8 @@ Foam::scalar Foam::depthAveragedFlow::gridToParticles(const scalar dt)
         g, sides_, dt, splitting_.active(), splitting_.rule(), motion
     );
     const uint8_t* quiet = resting_.quietCells(g);
-    label nRemoved = 0, nLeft = 0;
+    label nRemoved = 0;
+    gridGeometry::index nLeft = 0;
     visitShape
     (
         *shape_,

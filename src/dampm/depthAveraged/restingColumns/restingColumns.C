@@ -39,6 +39,10 @@ Foam::nodeRest* Foam::restingColumns::nodes
     const nodeBox& box
 )
 {
+    if (!skip)
+    {
+        return nullptr;
+    }
     now_.resize(g.nNodes());
     box_ = box;
     rest_ = nodeRest();
@@ -100,19 +104,27 @@ const uint8_t* Foam::restingColumns::quietCells(const gridGeometry& g)
         }
     }
 
+    // Written for the cells whose first node lies in the box: those of
+    // every column (its stencil lies in the box)
     const index nG = gridGeometry::nGhost;
     const index nCx = g.nCells[0];
-    quiet_.assign(size_t(nCx)*g.nCells[1], 0);
+    quiet_.resize(size_t(nCx)*g.nCells[1]);
     const index ci0 = std::max(lo0 - nG, index(0));
     const index ci1 = std::min(lo0 + w - nG, nCx);
-    const index cj0 = std::max(lo1 + 2 - nG, index(0));
-    const index cj1 = std::min(lo1 + h - 3 - nG, g.nCells[1]);
+    const index cj0 = std::max(lo1 - nG, index(0));
+    const index cj1 = std::min(lo1 + h - nG, g.nCells[1]);
 
     #pragma omp parallel for schedule(static)
     for (index cj = cj0; cj < cj1; ++cj)
     {
-        const uint8_t* r = rows_.data() + size_t(w)*(cj + nG - 2 - lo1);
         uint8_t* q = quiet_.data() + size_t(nCx)*cj;
+        const index b = cj + nG - lo1;
+        if (b < 2 || b + 3 >= h)
+        {
+            std::fill(q + ci0, q + ci1, 0);
+            continue;
+        }
+        const uint8_t* r = rows_.data() + size_t(w)*(b - 2);
         for (index ci = ci0; ci < ci1; ++ci)
         {
             const index a = ci + nG - lo0;
