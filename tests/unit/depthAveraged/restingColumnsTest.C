@@ -12,9 +12,10 @@ Description
     the quiet cells skipped and once over every column, give every column
     array and mark the same bits, step after step: while a region moves,
     after it stops (columns that moved last step are taken again), when it
-    moves again, and after a column is changed outside S9 (woken). No map
-    in the first step, after a step that may have moved a column by half a
-    cell, or when too few nodes rest.
+    moves again, by up to 0.85 cells a step, and after a column is changed
+    outside S9 (woken). No map in the first step, after a step that may
+    have moved a column by restingColumns::maxMove cells, or when too few
+    nodes rest.
 
 \*---------------------------------------------------------------------------*/
 
@@ -23,6 +24,7 @@ Description
 #include "shapeKernels.H"
 #include "columnMotionArrays.H"
 #include <gtest/gtest.h>
+#include <cmath>
 #include <functional>
 #include <random>
 #include <vector>
@@ -258,7 +260,22 @@ void checkRestingColumns(const Kernel& kernel)
     t.step(left);
     EXPECT_TRUE(t.a.same(t.b, t.rule));
 
-    // A node at more than half a cell a step: no map in the next step
+    // Moves of up to 0.85 of the smaller cell a step, then a stop: a map
+    // every step, the columns that moved taken again
+    const double fast = 0.85*0.4/(std::sqrt(2.0)*t.dt);
+    const auto leftFast = [&](label i, label) { return i < 12 ? fast : 0.0; };
+    for (int s = 0; s < 3; ++s)
+    {
+        EXPECT_NE(t.step(leftFast), nullptr);
+        EXPECT_TRUE(t.a.same(t.b, t.rule)) << "fast step " << s;
+    }
+    for (int s = 0; s < 2; ++s)
+    {
+        EXPECT_NE(t.step(none), nullptr);
+        EXPECT_TRUE(t.a.same(t.b, t.rule)) << "stop " << s;
+    }
+
+    // A node at more than maxMove cells a step: no map in the next step
     t.step
     (
         [&](label i, label j) { return i == 20 && j == 10 ? 20*slow : 0.0; }

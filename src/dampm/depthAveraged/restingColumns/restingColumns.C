@@ -165,8 +165,8 @@ void Foam::restingColumns::endStep(const gridGeometry& g, const double dt)
 {
     std::swap(now_, last_);
     lastBox_ = box_;
-    const double half = 0.5*std::min(g.dx[0], g.dx[1]);
-    lastBounded_ = !box_.empty() && dt*dt*rest_.maxSpeed2 < half*half;
+    const double reach = maxMove*std::min(g.dx[0], g.dx[1]);
+    lastBounded_ = !box_.empty() && dt*dt*rest_.maxSpeed2 < reach*reach;
     box_ = nodeBox();
     rest_ = nodeRest();
 }
