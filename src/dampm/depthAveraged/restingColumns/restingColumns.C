@@ -147,16 +147,11 @@ void Foam::restingColumns::wake
     const double y
 )
 {
-    const gridGeometry::index nG = gridGeometry::nGhost;
-    const gridGeometry::index ii = g.cellDir(0, x) + nG;
-    const gridGeometry::index jj = g.cellDir(1, y) + nG;
-    if
-    (
-        ii >= box_.lo[0] && ii < box_.hi[0]
-     && jj >= box_.lo[1] && jj < box_.hi[1]
-    )
+    const gridGeometry::index n =
+        g.nodeIndex(g.cellDir(0, x), g.cellDir(1, y), 0);
+    if (box_.overlaps(g.nodeBoxOf(n)))
     {
-        now_[ii + g.nNodesDir[0]*jj] = 0;
+        now_[n] = 0;
     }
 }
 
