@@ -35,7 +35,10 @@ Description
       and split marks;
     - the nodes' levels (S4) and velocity pairs (S8) that the gathers read
       are the node arrays' values, on every node of the box, with mass
-      and without.
+      and without;
+    - fusedMulAdd rounds once, lane by lane: std::fma's bits for a double,
+      two lanes and four, where the product and the sum rounded apart
+      differ.
     Random columns fill each tile with any number of columns, so that the
     scatters four at a time also end tiles with one to three columns taken
     one by one; their number is not a multiple of four, so that the passes
@@ -49,6 +52,7 @@ Description
 #include "particleTransfers.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
+#include <cmath>
 #include <random>
 
 using namespace Foam;
@@ -1002,6 +1006,65 @@ TEST(vectorLanes, NodeLevelsAndVelocityPairsAreTheNodeArrays)
         );
         EXPECT_GT(withMass, inBox/2);
         EXPECT_LT(withMass, inBox);
+    }
+}
+
+
+// fusedMulAdd is one rounding of a b + c in every lane: std::fma's bits.
+// a b = 1 - 2^-60 rounds to 1 on its own, so the product and the sum
+// rounded apart give 0 where the fused operation gives -2^-60; random
+// operands, any lane, and the signed zeros, give std::fma's bits too
+TEST(vectorLanes, FusedMulAddRoundsOnceInEveryLane)
+{
+    const double a = 1 + std::ldexp(1.0, -30), b = 1 - std::ldexp(1.0, -30);
+    ASSERT_EQ(a*b - 1, 0.0);
+    EXPECT_EQ(fusedMulAdd(a, b, -1.0), -std::ldexp(1.0, -60));
+
+    std::mt19937 gen(37);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int trial = 0; trial < 1000; ++trial)
+    {
+        double x[3][4];
+        for (auto& v : x)
+        {
+            for (double& xl : v)
+            {
+                xl = u(gen);
+            }
+        }
+        // One lane holds the case above, another signed zeros
+        const int l = trial % 4;
+        x[0][l] = a;
+        x[1][l] = b;
+        x[2][l] = -1;
+        x[0][(l + 1) % 4] = -0.0;
+        x[2][(l + 1) % 4] = trial % 2 ? -0.0 : 0.0;
+
+        const lanes4 r4 = fusedMulAdd
+        (
+            loadLanes(x[0]), loadLanes(x[1]), loadLanes(x[2])
+        );
+        const lanes4 s4 =
+            fusedMulAdd(x[0][0], loadLanes(x[1]), loadLanes(x[2]));
+        const lanes2 r2 = fusedMulAdd
+        (
+            loadPair(x[0]), loadPair(x[1]), loadPair(x[2])
+        );
+        for (int k = 0; k < 4; ++k)
+        {
+            const double ref = std::fma(x[0][k], x[1][k], x[2][k]);
+            ASSERT_TRUE(sameBits(r4[k], ref)) << trial << " lane " << k;
+            ASSERT_TRUE(sameBits(fusedMulAdd(x[0][k], x[1][k], x[2][k]), ref));
+            ASSERT_TRUE
+            (
+                sameBits(s4[k], std::fma(x[0][0], x[1][k], x[2][k]))
+            ) << trial << " lane " << k;
+            if (k < 2)
+            {
+                ASSERT_TRUE(sameBits(r2[k], ref)) << trial << " lane " << k;
+            }
+        }
+        EXPECT_EQ(r4[l], -std::ldexp(1.0, -60));
     }
 }
 
