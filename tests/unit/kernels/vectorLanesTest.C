@@ -1054,7 +1054,10 @@ TEST(vectorLanes, FusedMulAddRoundsOnceInEveryLane)
         {
             const double ref = std::fma(x[0][k], x[1][k], x[2][k]);
             ASSERT_TRUE(sameBits(r4[k], ref)) << trial << " lane " << k;
-            ASSERT_TRUE(sameBits(fusedMulAdd(x[0][k], x[1][k], x[2][k]), ref));
+            ASSERT_TRUE
+            (
+                sameBits(fusedMulAdd(x[0][k], x[1][k], x[2][k]), ref)
+            ) << trial << " lane " << k;
             ASSERT_TRUE
             (
                 sameBits(s4[k], std::fma(x[0][0], x[1][k], x[2][k]))
