@@ -1,6 +1,7 @@
 """Helpers for the dampmFoam case checks: read the case's output and assert
 numbers with a message that states the value, the expectation and the
 tolerance."""
+import filecmp
 import math
 import os
 import sys
@@ -81,6 +82,21 @@ def checkRadialFront(case, centre, wallDistance, nSectors=32):
               % (t, radii.min(), radii.max(), nSectors, spread, dx))
         checked += 1
     return checked
+
+
+def differingFiles(a, b):
+    """The files of directory trees a and b that differ byte for byte, that
+    only one holds, or that cannot be compared, as paths relative to them"""
+    found = []
+
+    def walk(c, prefix):
+        found.extend(prefix + f for f in c.left_only + c.right_only + c.funny_files)
+        _, mismatch, errors = filecmp.cmpfiles(c.left, c.right, c.common_files, shallow=False)
+        found.extend(prefix + f for f in mismatch + errors)
+        for name, sub in c.subdirs.items():
+            walk(sub, prefix + name + "/")
+    walk(filecmp.dircmp(a, b), "")
+    return found
 
 
 def finish():
