@@ -25,6 +25,7 @@ Description
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 #include <numeric>
 #include <random>
 
@@ -812,10 +813,16 @@ TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
     // particles removed (a parent and a half among them): every array a
     // removal moves follows, a recomputed one is only shortened, and the
     // binning is that of a count of its bins, kept by the next sort. The
-    // same on any number of threads; few particles leave bins empty
+    // same on any number of threads; few particles leave bins empty. The
+    // arrays move in place: with a removal in every 50 most runs move up,
+    // with one in every 5 down (fewer particles after than before the
+    // append); 500,003 particles move more than the last-level cache holds,
+    // with streaming stores
     const gridGeometry g = grid2D();
     const tileCellOrder o(g, 4);
-    for (const label n : {1003, 60})
+    const std::pair<label, label> sizeAndRemovals[] =
+        {{1003, 50}, {60, 50}, {500003, 50}, {500003, 5}};
+    for (const auto& [n, removedEvery] : sizeAndRemovals)
     {
         std::vector<label> parents;
         for (label i = 3; i < n; i += 17)
@@ -833,7 +840,7 @@ TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
             const label first = n;
             particleArrays before = p;
             std::vector<char> flagged(p.size(), 0);
-            for (label i = 0; i < n; i += 50)
+            for (label i = 0; i < n; i += removedEvery)
             {
                 flagged[i] = 1;
             }
@@ -902,6 +909,42 @@ TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
         }
     );
     EXPECT_NE(msg.find("ascending"), std::string::npos) << msg;
+}
+
+
+TEST(particleArrays, AppendedAfterTheLastParticleStaysOrMovesDownByTheRemoved)
+{
+    // The half of the last particle is already right after it: nothing
+    // moves. With the first particle removed, every particle moves one
+    // place down, the half too
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 4);
+    const label n = 500;
+    for (const bool firstRemoved : {false, true})
+    {
+        markedParticles m = withHalves(g, o, n, {n - 1});
+        particleArrays& p = m.p;
+        const particleArrays before = p;
+        std::vector<char> flagged(n + 1, 0);
+        flagged[0] = firstRemoved;
+        EXPECT_EQ
+        (
+            p.removeAndPlaceAppended(flagged, {n - 1}, g, o, 1),
+            label(firstRemoved)
+        );
+        ASSERT_EQ(p.size(), n + 1 - firstRemoved);
+        for (label k = 0; k < p.size(); ++k)
+        {
+            const label i = k + firstRemoved;
+            EXPECT_EQ(p.component(m.id)[k], before.component(m.id)[i]);
+            EXPECT_EQ
+            (
+                p.cell()[k], before.cell()[i < n ? i : n - 1]
+            );
+        }
+        EXPECT_EQ(p.component(m.id)[p.size() - 1], n);
+        expectBinningOfACount(p, g, o);
+    }
 }
 
 
