@@ -25,9 +25,9 @@ Description
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <utility>
 #include <numeric>
 #include <random>
+#include <utility>
 
 using namespace Foam;
 
@@ -937,10 +937,7 @@ TEST(particleArrays, AppendedAfterTheLastParticleStaysOrMovesDownByTheRemoved)
         {
             const label i = k + firstRemoved;
             EXPECT_EQ(p.component(m.id)[k], before.component(m.id)[i]);
-            EXPECT_EQ
-            (
-                p.cell()[k], before.cell()[i < n ? i : n - 1]
-            );
+            EXPECT_EQ(p.cell()[k], before.cell()[i < n ? i : n - 1]);
         }
         EXPECT_EQ(p.component(m.id)[p.size() - 1], n);
         expectBinningOfACount(p, g, o);
