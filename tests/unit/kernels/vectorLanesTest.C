@@ -38,7 +38,12 @@ Description
       and without;
     - fusedMulAdd rounds once, lane by lane: std::fma's bits for a double,
       two lanes and four, where the product and the sum rounded apart
-      differ.
+      differ;
+    - the scatters with node sums kept from a whole scatter before
+      (keptSums: the columns whose nodes all keep left out, the others
+      added to the nodes that do not keep only): every node's sums those
+      of the whole scatter, and some columns left out, only of those
+      whose nodes all keep.
     Random columns fill each tile with any number of columns, so that the
     scatters four at a time also end tiles with one to three columns taken
     one by one; their number is not a multiple of four, so that the passes
@@ -819,7 +824,168 @@ GIMPKernel gimp()
     return GIMPKernel(0.25);
 }
 
+
+//- Kept node sums (keptSums): the scatters of a step that keep some nodes'
+//  sums from the step before, leave out the columns whose nodes all keep
+//  and add nothing to a node that keeps, give every node the whole
+//  scatter's sums, bit for bit
+template<class Kernel>
+void checkKeptSums(const Kernel& kernel)
+{
+    typedef gridGeometry::index index;
+    laneCase t;
+    const shallowColumns cols = t.columns();
+    const double rho = 1800, gravity = 9.81;
+    const auto scatterBoth = [&](const keptSums& kept, index nLeft[2])
+    {
+        columnScatter sc = t.scatter();
+        sc.kept = kept.of(false);
+        nLeft[0] = scatterMomentum(sc, kernel, t.grid, cols);
+        sc.kept = kept.of(true);
+        nLeft[1] = scatterForces<Kernel, true, true, true>
+        (
+            sc, kernel, t.grid, cols, rho, gravity
+        );
+    };
+
+    // The whole scatters
+    index nLeft[2];
+    zeroNodes(t.g, t.nodes, t.grid);
+    scatterBoth(keptSums(), nLeft);
+    ASSERT_EQ(nLeft[0] + nLeft[1], 0);
+    const std::vector<double> momentum(t.grid.momentum.begin(),
+        t.grid.momentum.end());
+    const std::vector<double> loads(t.grid.loads.begin(), t.grid.loads.end());
+
+    // Nodes that keep: S3's sums in a block, S7's in a smaller one, both at
+    // a node alone
+    const index nx = t.g.nNodesDir[0], ny = t.g.nNodesDir[1];
+    std::vector<uint8_t> nodes(t.g.nNodes(), 0);
+    for (index j = 0; j < ny; ++j)
+    {
+        for (index i = 0; i < nx; ++i)
+        {
+            uint8_t& k = nodes[i + nx*j];
+            if (i >= 6 && i < 19 && j >= 4 && j < 15)
+            {
+                k |= keptSums::momentumKept;
+            }
+            if (i >= 9 && i < 16 && j >= 6 && j < 12)
+            {
+                k |= keptSums::loadsKept;
+            }
+        }
+    }
+    nodes[3 + nx*17] = keptSums::momentumKept | keptSums::loadsKept;
+
+    // Per cell: do the nodes c - 1 .. c + 2 of its columns keep, any or all?
+    const index nCx = t.g.nCells[0], nCy = t.g.nCells[1];
+    const index nG = gridGeometry::nGhost;
+    std::vector<uint8_t> cells(nCx*nCy, 0);
+    for (index cj = 0; cj < nCy; ++cj)
+    {
+        for (index ci = 0; ci < nCx; ++ci)
+        {
+            uint8_t any = 0, all = 0xff;
+            for (index b = -1; b <= 2; ++b)
+            {
+                for (index a = -1; a <= 2; ++a)
+                {
+                    const uint8_t k = nodes[ci + nG + a + nx*(cj + nG + b)];
+                    any |= k;
+                    all &= k;
+                }
+            }
+            uint8_t& c = cells[ci + nCx*cj];
+            c |= (any & keptSums::momentumKept) ? keptSums::momentumTouch : 0;
+            c |= (all & keptSums::momentumKept) ? keptSums::momentumAll : 0;
+            c |= (any & keptSums::loadsKept) ? keptSums::loadsTouch : 0;
+            c |= (all & keptSums::loadsKept) ? keptSums::loadsAll : 0;
+        }
+    }
+    keptSums kept;
+    kept.nodes = nodes.data();
+    kept.cells = cells.data();
+
+    // The next step: the kept sums as the whole scatters left them, the
+    // others not (zeroNodes clears them)
+    typedef shallowGrid G;
+    t.g.forEachNodeRow
+    (
+        t.nodes,
+        [&](const index first, const index last)
+        {
+            for (index j = first; j < last; ++j)
+            {
+                for (int c = 0; c < G::nMomentum; ++c)
+                {
+                    t.grid.momentum[G::nMomentum*j + c] =
+                        (nodes[j] & keptSums::momentumKept)
+                      ? momentum[G::nMomentum*j + c] : 12345.0;
+                }
+                for (int c = 0; c < G::nLoads; ++c)
+                {
+                    t.grid.loads[G::nLoads*j + c] =
+                        (nodes[j] & keptSums::loadsKept)
+                      ? loads[G::nLoads*j + c] : -6789.0;
+                }
+            }
+        }
+    );
+    zeroNodes(t.g, t.nodes, t.grid, kept);
+    scatterBoth(kept, nLeft);
+
+    for (label j = 0; j < t.g.nNodes(); ++j)
+    {
+        for (int c = 0; c < G::nMomentum; ++c)
+        {
+            ASSERT_TRUE
+            (
+                sameBits
+                (
+                    t.grid.momentum[G::nMomentum*j + c],
+                    momentum[G::nMomentum*j + c]
+                )
+            ) << "node " << j << ", mass or momentum " << c;
+        }
+        for (int c = 0; c < G::nLoads; ++c)
+        {
+            ASSERT_TRUE
+            (
+                sameBits(t.grid.loads[G::nLoads*j + c], loads[G::nLoads*j + c])
+            ) << "node " << j << ", load " << c;
+        }
+    }
+
+    // Left out: columns in cells whose nodes all keep (four at a time, so
+    // not those in a four with another column); and some columns added to
+    // the nodes that do not keep only
+    index expected[2] = {0, 0}, masked[2] = {0, 0};
+    for (label i = 0; i < cols.n; ++i)
+    {
+        const uint8_t c = cells[t.g.cellOf(cols.x[i], cols.y[i], 0)];
+        expected[0] += (c & keptSums::momentumAll) != 0;
+        expected[1] += (c & keptSums::loadsAll) != 0;
+        masked[0] += (c & keptSums::momentumTouch) && !(c & keptSums::momentumAll);
+        masked[1] += (c & keptSums::loadsTouch) && !(c & keptSums::loadsAll);
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+        EXPECT_GT(nLeft[k], 0) << (k ? "S7" : "S3");
+        EXPECT_LE(nLeft[k], expected[k]) << (k ? "S7" : "S3");
+        EXPECT_GT(masked[k], 0) << (k ? "S7" : "S3");
+    }
+}
+
 } // End anonymous namespace
+
+
+TEST(vectorLanes, ScattersKeepTheKeptSumsAndLeaveOutTheirColumns)
+{
+    checkKeptSums(linearKernel());
+    checkKeptSums(gimp());
+    checkKeptSums(quadraticBSplineKernel());
+}
 
 
 TEST(vectorLanes, MomentumScatterIsTheScalarSumBitForBit)

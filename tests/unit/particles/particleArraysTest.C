@@ -10,7 +10,8 @@ Description
     particleArrays: fields, append, stable removal, the counting sort by
     cell that keeps every field of a particle together, the binning kept
     while every particle stays near its bin (along each axis of 3D grids
-    whose cell counts are no power of two), and the node rows' spans the
+    whose cell counts are no power of two), the cells of the particles a
+    full binning gives another bin, and the node rows' spans the
     particles' stencils touch.
 
 \*---------------------------------------------------------------------------*/
@@ -334,6 +335,61 @@ TEST(particleArrays, BinningIsKeptWhileParticlesStayNearTheirCells)
     {
         EXPECT_LE(p.cell()[i - 1], p.cell()[i]);
     }
+}
+
+
+// binChanges: the cells (where the particles are) of the particles a full
+// binning gives another bin than they had, and only those; none while the
+// binning is kept, none after clearBinChanges
+TEST(particleArrays, FullBinningTellsTheCellsOfTheParticlesGivenAnotherBin)
+{
+    const gridGeometry g = grid2D();
+    const tileCellOrder order(g, 1);
+    particleArrays p = randomParticles(g, 2000);
+    p.trackBinChanges(g);
+    EXPECT_TRUE(p.binChanges() == nullptr);
+    EXPECT_TRUE(p.sortByCell(g, order, 1));
+    EXPECT_TRUE(p.binChanges() != nullptr) << "appended particles had no bin";
+    p.clearBinChanges();
+    EXPECT_TRUE(p.binChanges() == nullptr);
+
+    // One particle in 50 moves by 0.9 cells: the binning is kept
+    double* x = p.component(particleArrays::X);
+    for (label i = 0; i < p.size(); i += 50)
+    {
+        x[i] = std::min(std::max(x[i] + 0.9*g.dx[0]*((i % 3) - 1), 0.0),
+            g.upper(0));
+    }
+    EXPECT_FALSE(p.sortByCell(g, order, 1));
+    EXPECT_TRUE(p.binChanges() == nullptr);
+
+    // One more two cells away: re-binned. The cells of those that changed
+    // bin, where they are now
+    x[7] = x[7] > g.upper(0)/2 ? x[7] - 2.5*g.dx[0] : x[7] + 2.5*g.dx[0];
+    std::vector<uint8_t> expected(g.nCellsTotal(), 0);
+    label nChanged = 0;
+    for (label i = 0; i < p.size(); ++i)
+    {
+        const label c = g.cellOf(x[i], p.component(particleArrays::Y)[i], 0);
+        if (c != p.cell()[i])
+        {
+            expected[c] = 1;
+            ++nChanged;
+        }
+    }
+    EXPECT_GT(nChanged, 10);
+    EXPECT_TRUE(p.sortByCell(g, order, 1));
+    ASSERT_TRUE(p.binChanges() != nullptr);
+    label nMarked = 0;
+    for (label c = 0; c < g.nCellsTotal(); ++c)
+    {
+        EXPECT_EQ(p.binChanges()[c] != 0, expected[c] != 0) << "cell " << c;
+        nMarked += expected[c];
+    }
+    EXPECT_GT(nMarked, 5);
+    EXPECT_LT(nMarked, g.nCellsTotal()/2);
+    p.clearBinChanges();
+    EXPECT_TRUE(p.binChanges() == nullptr);
 }
 
 

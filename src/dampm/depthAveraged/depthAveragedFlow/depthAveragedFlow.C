@@ -473,6 +473,7 @@ Foam::depthAveragedFlow::depthAveragedFlow
     setStartDefaults();
     detectFlatBed();
     markTransientFields();
+    particles_.trackBinChanges(grid.geometry());
     flagged_.reserve(particles_.size());
     splitting_.reserve(particles_.size());
 }
@@ -571,26 +572,39 @@ void Foam::depthAveragedFlow::particlesToGrid()
     binningChecked_ = false;
 
     // Work on the nodes the columns touch, and clear those of last step
-    // (decomposed: also the shared nodes a neighbour's columns reach)
+    // (decomposed: also the shared nodes a neighbour's columns reach), but
+    // the sums kept at rest. Not decomposed only: a shared node's sum is
+    // its processors' together
     activeNodes_ = stencilNodes_;
     activeNodes_.unite(sharedNodes_);
     stencilNodes_ = particles_.stencilNodes(g);
     sharedNodes_ = parts.shareNodes(stencilNodes_);
     activeNodes_.unite(stencilNodes_);
     activeNodes_.unite(sharedNodes_);
-    zeroNodes(g, activeNodes_, nodes_);
+    kept_ =
+        Pstream::parRun()
+      ? keptSums()
+      : resting_.keptNodes
+        (
+            g, !fusedGather() && !rheology_->active(),
+            particles_.binChanges()
+        );
+    particles_.clearBinChanges();
+    zeroNodes(g, activeNodes_, nodes_, kept_);
 
     const shallowColumns cols = columns();
+    const int32_t* binStart = particles_.binStart().data();
     const columnScatter scatter
     {
-        g, stencilNodes_, schedule_, particles_.binStart().data()
+        g, stencilNodes_, schedule_, binStart, kept_.of(false)
     };
     visitShape
     (
         *shape_,
         [&](const auto& kernel)
         {
-            scatterMomentum(scatter, kernel, nodes_, cols);
+            const label nLeft = scatterMomentum(scatter, kernel, nodes_, cols);
+            resting_.countScatter(false, cols.n, nLeft);
         }
     );
     parts.sumNodes(nodes_.momentum.data(), shallowGrid::nMomentum);
@@ -614,9 +628,13 @@ void Foam::depthAveragedFlow::particlesToGrid()
                 {
                     if (forcesDone_)
                     {
+                        const columnScatter every
+                        {
+                            g, stencilNodes_, schedule_, binStart
+                        };
                         scatterForces<K, true, false, false, true, terrain()>
                         (
-                            scatter, kernel, nodes_, cols, rho_, g_, hMin_,
+                            every, kernel, nodes_, cols, rho_, g_, hMin_,
                             slopeCorrection_
                         );
                     }
@@ -750,7 +768,8 @@ void Foam::depthAveragedFlow::computeForces()
     const shallowColumns cols = columns();
     const columnScatter scatter
     {
-        g, stencilNodes_, schedule_, particles_.binStart().data()
+        g, stencilNodes_, schedule_, particles_.binStart().data(),
+        kept_.of(true)
     };
 
     // One instantiation per combination of terms: a term a case does not
@@ -765,10 +784,12 @@ void Foam::depthAveragedFlow::computeForces()
             (
                 [&](auto gradientForm, auto stress, auto basal)
                 {
-                    scatterForces<K, gradientForm(), stress(), basal()>
-                    (
-                        scatter, kernel, nodes_, cols, rho_, g_
-                    );
+                    const label nLeft =
+                        scatterForces<K, gradientForm(), stress(), basal()>
+                        (
+                            scatter, kernel, nodes_, cols, rho_, g_
+                        );
+                    resting_.countScatter(true, cols.n, nLeft);
                 },
                 pressureForm_ == pressureFormType::gradient, stress, basal
             );

@@ -27,8 +27,75 @@ Foam::restingColumns::restingColumns()
 :
     lastBounded_(false),
     nUpdates_(0),
-    nLeft_(0)
+    nLeft_(0),
+    quietValid_(false),
+    ci0_(0),
+    ci1_(0),
+    cj0_(0),
+    cj1_(0),
+    nScattered_{0, 0},
+    nScatterLeft_{0, 0}
 {}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<bool All>
+void Foam::restingColumns::window
+(
+    const std::vector<uint8_t>& in,
+    std::vector<uint8_t>& out,
+    const gridGeometry::index w,
+    const gridGeometry::index h,
+    const int lo,
+    const int hi
+)
+{
+    typedef gridGeometry::index index;
+    pass_.resize(size_t(w)*h);
+    out.resize(size_t(w)*h);
+
+    // Along x, then along y; each inner loop over a row (vectorised)
+    #pragma omp parallel for schedule(static)
+    for (index b = 0; b < h; ++b)
+    {
+        const uint8_t* s = in.data() + size_t(w)*b;
+        uint8_t* r = pass_.data() + size_t(w)*b;
+        std::fill(r, r + w, 0);
+        const index a0 = -lo, a1 = w - hi;
+        for (index a = a0; a < a1; ++a)
+        {
+            r[a] = s[a + lo];
+        }
+        for (int d = lo + 1; d <= hi; ++d)
+        {
+            for (index a = a0; a < a1; ++a)
+            {
+                r[a] = All ? r[a] & s[a + d] : r[a] | s[a + d];
+            }
+        }
+    }
+    #pragma omp parallel for schedule(static)
+    for (index b = 0; b < h; ++b)
+    {
+        uint8_t* o = out.data() + size_t(w)*b;
+        if (b + lo < 0 || b + hi >= h)
+        {
+            std::fill(o, o + w, 0);
+            continue;
+        }
+        const uint8_t* r0 = pass_.data() + size_t(w)*(b + lo);
+        std::copy(r0, r0 + w, o);
+        for (int d = lo + 1; d <= hi; ++d)
+        {
+            const uint8_t* r = pass_.data() + size_t(w)*(b + d);
+            for (index a = 0; a < w; ++a)
+            {
+                o[a] = All ? uint8_t(o[a] & r[a]) : uint8_t(o[a] | r[a]);
+            }
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -54,6 +121,8 @@ Foam::nodeRest* Foam::restingColumns::nodes
 const uint8_t* Foam::restingColumns::quietCells(const gridGeometry& g)
 {
     typedef gridGeometry::index index;
+    quietValid_ = false;
+    woken_.clear();
     if
     (
         !skip || !lastBounded_ || box_.empty() || lastBox_.empty()
@@ -89,23 +158,12 @@ const uint8_t* Foam::restingColumns::quietCells(const gridGeometry& g)
         }
     }
 
-    // Each node's window a - 2 .. a + 3 along x, then along y to the
-    // cells (cell c's first node is c + nGhost); a window leaving the box
+    // Each node's window a - 2 .. a + 3 per axis; a window leaving the box
     // is not at rest
-    #pragma omp parallel for schedule(static)
-    for (index b = 0; b < h; ++b)
-    {
-        const uint8_t* s = both_.data() + size_t(w)*b;
-        uint8_t* r = rows_.data() + size_t(w)*b;
-        std::fill(r, r + w, 0);
-        for (index a = 2; a < w - 3; ++a)
-        {
-            r[a] = s[a - 2] & s[a - 1] & s[a] & s[a + 1] & s[a + 2] & s[a + 3];
-        }
-    }
+    window<true>(both_, rows_, w, h, -2, 3);
 
-    // Written for the cells whose first node lies in the box: those of
-    // every column (its stencil lies in the box)
+    // Written for the cells whose first node (c + nGhost) lies in the box:
+    // those of every column (its stencil lies in the box)
     const index nG = gridGeometry::nGhost;
     const index nCx = g.nCells[0];
     quiet_.resize(size_t(nCx)*g.nCells[1]);
@@ -117,25 +175,14 @@ const uint8_t* Foam::restingColumns::quietCells(const gridGeometry& g)
     #pragma omp parallel for schedule(static)
     for (index cj = cj0; cj < cj1; ++cj)
     {
-        uint8_t* q = quiet_.data() + size_t(nCx)*cj;
-        const index b = cj + nG - lo1;
-        if (b < 2 || b + 3 >= h)
-        {
-            std::fill(q + ci0, q + ci1, 0);
-            continue;
-        }
-        const uint8_t* r = rows_.data() + size_t(w)*(b - 2);
-        for (index ci = ci0; ci < ci1; ++ci)
-        {
-            const index a = ci + nG - lo0;
-            uint8_t all = 1;
-            for (int d = 0; d < 6; ++d)
-            {
-                all &= r[a + size_t(w)*d];
-            }
-            q[ci] = all;
-        }
+        const uint8_t* r = rows_.data() + size_t(w)*(cj + nG - lo1) + nG - lo0;
+        std::copy(r + ci0, r + ci1, quiet_.data() + size_t(nCx)*cj + ci0);
     }
+    quietValid_ = true;
+    ci0_ = ci0;
+    ci1_ = ci1;
+    cj0_ = cj0;
+    cj1_ = cj1;
     return quiet_.data();
 }
 
@@ -147,12 +194,13 @@ void Foam::restingColumns::wake
     const double y
 )
 {
-    const gridGeometry::index n =
-        g.nodeIndex(g.cellDir(0, x), g.cellDir(1, y), 0);
+    const gridGeometry::index ci = g.cellDir(0, x), cj = g.cellDir(1, y);
+    const gridGeometry::index n = g.nodeIndex(ci, cj, 0);
     if (box_.overlaps(g.nodeBoxOf(n)))
     {
         now_[n] = 0;
     }
+    woken_.push_back(g.cellIndex(ci, cj, 0));
 }
 
 
@@ -167,6 +215,108 @@ void Foam::restingColumns::endStep(const gridGeometry& g, const double dt)
 }
 
 
+Foam::keptSums Foam::restingColumns::keptNodes
+(
+    const gridGeometry& g,
+    const bool loads,
+    const uint8_t* binChanged
+)
+{
+    typedef gridGeometry::index index;
+    if (!skip || !quietValid_ || !lastBounded_ || ci1_ <= ci0_ || cj1_ <= cj0_)
+    {
+        return keptSums();
+    }
+
+    // Cells and nodes in one local array: a cell at its first node. The
+    // quiet map's cells and a margin of m, where nothing is stable
+    const index m = 3, nG = gridGeometry::nGhost, nCx = g.nCells[0];
+    const index w = ci1_ - ci0_ + 2*m, h = cj1_ - cj0_ + 2*m;
+    const index x0 = ci0_ + nG - m, y0 = cj0_ + nG - m;
+    stable_.assign(size_t(w)*h, 0);
+    #pragma omp parallel for schedule(static)
+    for (index cj = cj0_; cj < cj1_; ++cj)
+    {
+        const uint8_t* q = quiet_.data() + size_t(nCx)*cj;
+        const uint8_t* b = binChanged ? binChanged + size_t(nCx)*cj : nullptr;
+        uint8_t* s = stable_.data() + size_t(w)*(cj - cj0_ + m) + m - ci0_;
+        for (index ci = ci0_; ci < ci1_; ++ci)
+        {
+            s[ci] = q[ci] != 0 && !(b && b[ci]);
+        }
+    }
+    for (const index c : woken_)
+    {
+        const index ci = c % nCx, cj = c/nCx;
+        if (ci >= ci0_ && ci < ci1_ && cj >= cj0_ && cj < cj1_)
+        {
+            stable_[size_t(w)*(cj - cj0_ + m) + ci - ci0_ + m] = 0;
+        }
+    }
+
+    // S3 kept where the cells c - 3 .. c + 2 are stable; S7 where the nodes
+    // within 3 keep S3
+    window<true>(stable_, kept3_, w, h, -3, 2);
+    if (loads)
+    {
+        window<true>(kept3_, kept7_, w, h, -3, 3);
+    }
+    else
+    {
+        kept7_.assign(size_t(w)*h, 0);
+    }
+
+    const index nx = g.nNodesDir[0], ny = g.nNodesDir[1];
+    keptNodes_.assign(g.nNodes(), 0);
+    #pragma omp parallel for schedule(static)
+    for (index b = 0; b < h; ++b)
+    {
+        const index jj = y0 + b;
+        if (jj < 0 || jj >= ny)
+        {
+            continue;
+        }
+        const uint8_t* k3 = kept3_.data() + size_t(w)*b;
+        const uint8_t* k7 = kept7_.data() + size_t(w)*b;
+        for (index a = std::max(-x0, index(0)); a < w && x0 + a < nx; ++a)
+        {
+            keptNodes_[x0 + a + size_t(nx)*jj] = uint8_t
+            (
+                k3[a]*keptSums::momentumKept | k7[a]*keptSums::loadsKept
+            );
+        }
+    }
+
+    // Per cell: do its columns' nodes c - 1 .. c + 2 keep, any or all?
+    cellCodes_.assign(size_t(nCx)*g.nCells[1], 0);
+    const std::pair<const std::vector<uint8_t>*, uint8_t> sums[2] =
+    {
+        {&kept3_, keptSums::momentumTouch}, {&kept7_, keptSums::loadsTouch}
+    };
+    for (const auto& sum : sums)
+    {
+        window<false>(*sum.first, any_, w, h, -1, 2);
+        window<true>(*sum.first, all_, w, h, -1, 2);
+        const uint8_t touch = sum.second, all = 2*sum.second;
+        #pragma omp parallel for schedule(static)
+        for (index cj = cj0_; cj < cj1_; ++cj)
+        {
+            uint8_t* c = cellCodes_.data() + size_t(nCx)*cj;
+            const size_t row = size_t(w)*(cj - cj0_ + m) + m - ci0_;
+            for (index ci = ci0_; ci < ci1_; ++ci)
+            {
+                c[ci] |= any_[row + ci]*touch | all_[row + ci]*all;
+            }
+        }
+    }
+
+    keptSums k;
+    k.nodes = keptNodes_.data();
+    k.cells = cellCodes_.data();
+    return k;
+}
+
+
 void Foam::restingColumns::report(Ostream& os) const
 {
     const scalar n = returnReduce(nUpdates_, sumOp<scalar>());
@@ -176,6 +326,19 @@ void Foam::restingColumns::report(Ostream& os) const
         os  << "Columns at rest left as they were by G2P: " << nLeft
             << " of " << n << " column-updates ("
             << 100*nLeft/n << " %)" << nl << endl;
+    }
+    const char* names[2] = {"mass and momentum (S3)", "forces (S7)"};
+    for (const bool loads : {false, true})
+    {
+        const scalar nS = returnReduce(nScattered_[loads], sumOp<scalar>());
+        const scalar nOut =
+            returnReduce(nScatterLeft_[loads], sumOp<scalar>());
+        if (nOut > 0)
+        {
+            os  << "Columns at rest left out of the scatter of "
+                << names[loads] << ": " << nOut << " of " << nS
+                << " column-updates (" << 100*nOut/nS << " %)" << nl << endl;
+        }
     }
 }
 

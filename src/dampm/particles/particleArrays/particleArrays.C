@@ -137,7 +137,8 @@ inline void moveValues
 Foam::particleArrays::particleArrays()
 :
     size_(0),
-    binned_(false)
+    binned_(false),
+    anyBinChanged_(false)
 {
     addField("positions", fieldKind::vector);
     addField("U", fieldKind::vector);
@@ -1023,16 +1024,27 @@ void Foam::particleArrays::rebin
     const label nRanks = order.nRanks();
     rank_.resize(size_);
     // The rank from the cell's indices per axis, not from its flat index
-    // (two integer divisions fewer per particle)
-    #pragma omp parallel for schedule(static)
+    // (two integer divisions fewer per particle). Where tracked, the cells
+    // of the particles whose bin changes (cell_ holds the bins before)
+    uint8_t* changed = binChanged_.empty() ? nullptr : binChanged_.data();
+    bool anyChanged = false;
+    #pragma omp parallel for schedule(static) reduction(||:anyChanged)
     for (label i = 0; i < size_; ++i)
     {
         gridGeometry::index ijk[3];
         g.cellIJK(x[i], y[i], z[i], ijk);
-        cellp[i] = g.cellIndex(ijk[0], ijk[1], ijk[2]);
+        const label c = g.cellIndex(ijk[0], ijk[1], ijk[2]);
+        if (changed && cellp[i] != c)
+        {
+            #pragma omp atomic write
+            changed[c] = 1;
+            anyChanged = true;
+        }
+        cellp[i] = c;
         rank_[i] =
             removed && removed[i] ? nRanks : order.rank(ijk[0], ijk[1], ijk[2]);
     }
+    anyBinChanged_ = anyBinChanged_ || anyChanged;
     // The removed bin's start, binStart_[nRanks], stays for the placement
     // (count_ is sized by the bins counted)
     const bool sorted = countRanks(nRanks + (removed != nullptr));
