@@ -853,8 +853,10 @@ void checkKeptSums(const Kernel& kernel)
     zeroNodes(t.g, t.nodes, t.grid);
     scatterBoth(keptSums(), nLeft);
     ASSERT_EQ(nLeft[0] + nLeft[1], 0);
-    const std::vector<double> momentum(t.grid.momentum.begin(),
-        t.grid.momentum.end());
+    const std::vector<double> momentum
+    (
+        t.grid.momentum.begin(), t.grid.momentum.end()
+    );
     const std::vector<double> loads(t.grid.loads.begin(), t.grid.loads.end());
 
     // Nodes that keep: S3's sums in a block, S7's in a smaller one, both at
@@ -966,7 +968,8 @@ void checkKeptSums(const Kernel& kernel)
         const uint8_t c = cells[t.g.cellOf(cols.x[i], cols.y[i], 0)];
         expected[0] += (c & keptSums::momentumAll) != 0;
         expected[1] += (c & keptSums::loadsAll) != 0;
-        masked[0] += (c & keptSums::momentumTouch) && !(c & keptSums::momentumAll);
+        masked[0] +=
+            (c & keptSums::momentumTouch) && !(c & keptSums::momentumAll);
         masked[1] += (c & keptSums::loadsTouch) && !(c & keptSums::loadsAll);
     }
     for (int k = 0; k < 2; ++k)

@@ -473,7 +473,10 @@ Foam::depthAveragedFlow::depthAveragedFlow
     setStartDefaults();
     detectFlatBed();
     markTransientFields();
-    particles_.trackBinChanges(grid.geometry());
+    if (!Pstream::parRun())
+    {
+        particles_.trackBinChanges(grid.geometry());
+    }
     flagged_.reserve(particles_.size());
     splitting_.reserve(particles_.size());
 }

@@ -175,8 +175,9 @@ const uint8_t* Foam::restingColumns::quietCells(const gridGeometry& g)
     #pragma omp parallel for schedule(static)
     for (index cj = cj0; cj < cj1; ++cj)
     {
-        const uint8_t* r = rows_.data() + size_t(w)*(cj + nG - lo1) + nG - lo0;
-        std::copy(r + ci0, r + ci1, quiet_.data() + size_t(nCx)*cj + ci0);
+        const uint8_t* r =
+            rows_.data() + size_t(w)*(cj + nG - lo1) + (ci0 + nG - lo0);
+        std::copy(r, r + (ci1 - ci0), quiet_.data() + size_t(nCx)*cj + ci0);
     }
     quietValid_ = true;
     ci0_ = ci0;
@@ -239,10 +240,10 @@ Foam::keptSums Foam::restingColumns::keptNodes
     {
         const uint8_t* q = quiet_.data() + size_t(nCx)*cj;
         const uint8_t* b = binChanged ? binChanged + size_t(nCx)*cj : nullptr;
-        uint8_t* s = stable_.data() + size_t(w)*(cj - cj0_ + m) + m - ci0_;
+        uint8_t* s = stable_.data() + size_t(w)*(cj - cj0_ + m) + m;
         for (index ci = ci0_; ci < ci1_; ++ci)
         {
-            s[ci] = q[ci] != 0 && !(b && b[ci]);
+            s[ci - ci0_] = q[ci] != 0 && !(b && b[ci]);
         }
     }
     for (const index c : woken_)
@@ -268,7 +269,8 @@ Foam::keptSums Foam::restingColumns::keptNodes
 
     const index nx = g.nNodesDir[0], ny = g.nNodesDir[1];
     keptNodes_.assign(g.nNodes(), 0);
-    #pragma omp parallel for schedule(static)
+    bool any = false;
+    #pragma omp parallel for schedule(static) reduction(||:any)
     for (index b = 0; b < h; ++b)
     {
         const index jj = y0 + b;
@@ -278,13 +280,21 @@ Foam::keptSums Foam::restingColumns::keptNodes
         }
         const uint8_t* k3 = kept3_.data() + size_t(w)*b;
         const uint8_t* k7 = kept7_.data() + size_t(w)*b;
+        uint8_t rowAny = 0;
         for (index a = std::max(-x0, index(0)); a < w && x0 + a < nx; ++a)
         {
+            rowAny |= k3[a];
             keptNodes_[x0 + a + size_t(nx)*jj] = uint8_t
             (
                 k3[a]*keptSums::momentumKept | k7[a]*keptSums::loadsKept
             );
         }
+        any = any || rowAny;
+    }
+    if (!any)
+    {
+        // The scatters then take every column without looking
+        return keptSums();
     }
 
     // Per cell: do its columns' nodes c - 1 .. c + 2 keep, any or all?
@@ -302,10 +312,11 @@ Foam::keptSums Foam::restingColumns::keptNodes
         for (index cj = cj0_; cj < cj1_; ++cj)
         {
             uint8_t* c = cellCodes_.data() + size_t(nCx)*cj;
-            const size_t row = size_t(w)*(cj - cj0_ + m) + m - ci0_;
+            const size_t row = size_t(w)*(cj - cj0_ + m) + m;
             for (index ci = ci0_; ci < ci1_; ++ci)
             {
-                c[ci] |= any_[row + ci]*touch | all_[row + ci]*all;
+                const size_t a = row + (ci - ci0_);
+                c[ci] |= any_[a]*touch | all_[a]*all;
             }
         }
     }
