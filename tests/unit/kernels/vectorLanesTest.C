@@ -825,6 +825,76 @@ GIMPKernel gimp()
 }
 
 
+//- Nodes that keep sums (keptSums) on a laneCase's grid: S3's sums in a
+//  block, S7's in a smaller one, both at a node alone; and per cell, do
+//  the nodes c - 1 .. c + 2 of its columns keep, any or all?
+struct keptBlocks
+{
+    std::vector<uint8_t> nodes, cells;
+
+    explicit keptBlocks(const gridGeometry& g)
+    {
+        typedef gridGeometry::index index;
+        const index nx = g.nNodesDir[0], ny = g.nNodesDir[1];
+        nodes.assign(g.nNodes(), 0);
+        for (index j = 0; j < ny; ++j)
+        {
+            for (index i = 0; i < nx; ++i)
+            {
+                uint8_t& k = nodes[i + nx*j];
+                if (i >= 6 && i < 19 && j >= 4 && j < 15)
+                {
+                    k |= keptSums::momentumKept;
+                }
+                if (i >= 9 && i < 16 && j >= 6 && j < 12)
+                {
+                    k |= keptSums::loadsKept;
+                }
+            }
+        }
+        nodes[3 + nx*17] = keptSums::momentumKept | keptSums::loadsKept;
+
+        const index nCx = g.nCells[0], nCy = g.nCells[1];
+        const index nG = gridGeometry::nGhost;
+        cells.assign(nCx*nCy, 0);
+        for (index cj = 0; cj < nCy; ++cj)
+        {
+            for (index ci = 0; ci < nCx; ++ci)
+            {
+                uint8_t any = 0, all = 0xff;
+                for (index b = -1; b <= 2; ++b)
+                {
+                    for (index a = -1; a <= 2; ++a)
+                    {
+                        const uint8_t k =
+                            nodes[ci + nG + a + nx*(cj + nG + b)];
+                        any |= k;
+                        all &= k;
+                    }
+                }
+                const uint8_t m = keptSums::momentumKept;
+                const uint8_t l = keptSums::loadsKept;
+                cells[ci + nCx*cj] = uint8_t
+                (
+                    ((any & m) ? keptSums::momentumTouch : 0)
+                  | ((all & m) ? keptSums::momentumAll : 0)
+                  | ((any & l) ? keptSums::loadsTouch : 0)
+                  | ((all & l) ? keptSums::loadsAll : 0)
+                );
+            }
+        }
+    }
+
+    keptSums sums() const
+    {
+        keptSums k;
+        k.nodes = nodes.data();
+        k.cells = cells.data();
+        return k;
+    }
+};
+
+
 //- Kept node sums (keptSums): the scatters of a step that keep some nodes'
 //  sums from the step before, leave out the columns whose nodes all keep
 //  and add nothing to a node that keeps, give every node the whole
@@ -859,55 +929,10 @@ void checkKeptSums(const Kernel& kernel)
     );
     const std::vector<double> loads(t.grid.loads.begin(), t.grid.loads.end());
 
-    // Nodes that keep: S3's sums in a block, S7's in a smaller one, both at
-    // a node alone
-    const index nx = t.g.nNodesDir[0], ny = t.g.nNodesDir[1];
-    std::vector<uint8_t> nodes(t.g.nNodes(), 0);
-    for (index j = 0; j < ny; ++j)
-    {
-        for (index i = 0; i < nx; ++i)
-        {
-            uint8_t& k = nodes[i + nx*j];
-            if (i >= 6 && i < 19 && j >= 4 && j < 15)
-            {
-                k |= keptSums::momentumKept;
-            }
-            if (i >= 9 && i < 16 && j >= 6 && j < 12)
-            {
-                k |= keptSums::loadsKept;
-            }
-        }
-    }
-    nodes[3 + nx*17] = keptSums::momentumKept | keptSums::loadsKept;
-
-    // Per cell: do the nodes c - 1 .. c + 2 of its columns keep, any or all?
-    const index nCx = t.g.nCells[0], nCy = t.g.nCells[1];
-    const index nG = gridGeometry::nGhost;
-    std::vector<uint8_t> cells(nCx*nCy, 0);
-    for (index cj = 0; cj < nCy; ++cj)
-    {
-        for (index ci = 0; ci < nCx; ++ci)
-        {
-            uint8_t any = 0, all = 0xff;
-            for (index b = -1; b <= 2; ++b)
-            {
-                for (index a = -1; a <= 2; ++a)
-                {
-                    const uint8_t k = nodes[ci + nG + a + nx*(cj + nG + b)];
-                    any |= k;
-                    all &= k;
-                }
-            }
-            uint8_t& c = cells[ci + nCx*cj];
-            c |= (any & keptSums::momentumKept) ? keptSums::momentumTouch : 0;
-            c |= (all & keptSums::momentumKept) ? keptSums::momentumAll : 0;
-            c |= (any & keptSums::loadsKept) ? keptSums::loadsTouch : 0;
-            c |= (all & keptSums::loadsKept) ? keptSums::loadsAll : 0;
-        }
-    }
-    keptSums kept;
-    kept.nodes = nodes.data();
-    kept.cells = cells.data();
+    const keptBlocks blocks(t.g);
+    const std::vector<uint8_t>& nodes = blocks.nodes;
+    const std::vector<uint8_t>& cells = blocks.cells;
+    const keptSums kept = blocks.sums();
 
     // The next step: the kept sums as the whole scatters left them, the
     // others not (zeroNodes clears them)
@@ -980,6 +1005,70 @@ void checkKeptSums(const Kernel& kernel)
     }
 }
 
+
+//- S5 with S7's view of kept sums (keptBlocks) against S5 of every column:
+//  a column is left out, nothing written for it, exactly when it is in a
+//  four (or among the last few, alone) all of whose columns S7 leaves
+//  out; every other column has the whole gather's values, bit for bit
+template<class Kernel, bool Terrain>
+void checkSurfaceGatherLeavesOut(const Kernel& kernel)
+{
+    typedef gridGeometry::index index;
+    const double hMin = 0.05;
+    laneCase t, r;
+    const keptBlocks blocks(t.g);
+    const shallowColumns cols = t.columns(), ref = r.columns();
+    gatherSurface<Kernel, Terrain>(r.g, kernel, r.grid, ref, hMin, true);
+
+    // What each column held before: left out, it still holds it
+    laneCase before;
+    const shallowColumns held = before.columns();
+    const index nLeft = gatherSurface<Kernel, Terrain>
+    (
+        t.g, kernel, t.grid, cols, hMin, true, blocks.sums().of(true)
+    );
+
+    const auto leftOut = [&](const index i)
+    {
+        return
+            (blocks.cells[t.g.cellOf(cols.x[i], cols.y[i], 0)]
+          & keptSums::loadsAll) != 0;
+    };
+    index expected = 0;
+    for (index i = 0; i < cols.n; ++i)
+    {
+        const index first = i - i%4;
+        bool out = leftOut(i);
+        if (first + 4 <= cols.n)
+        {
+            for (index l = first; l < first + 4; ++l)
+            {
+                out = out && leftOut(l);
+            }
+        }
+        expected += out;
+        const shallowColumns& value = out ? held : ref;
+        for
+        (
+            const auto& f :
+            {
+                std::make_pair(cols.h, value.h), {cols.a, value.a},
+                {cols.kappa, value.kappa}, {cols.Zb, value.Zb},
+                {cols.gradZetaX, value.gradZetaX},
+                {cols.gradZetaY, value.gradZetaY},
+                {cols.gradZx, value.gradZx}, {cols.gradZy, value.gradZy}
+            }
+        )
+        {
+            ASSERT_TRUE(sameBits(f.first[i], f.second[i]))
+                << "column " << i << (out ? ", left out" : "");
+        }
+    }
+    EXPECT_EQ(nLeft, expected);
+    EXPECT_GT(nLeft, 16);
+    EXPECT_LT(nLeft, cols.n/2);
+}
+
 } // End anonymous namespace
 
 
@@ -988,6 +1077,17 @@ TEST(vectorLanes, ScattersKeepTheKeptSumsAndLeaveOutTheirColumns)
     checkKeptSums(linearKernel());
     checkKeptSums(gimp());
     checkKeptSums(quadraticBSplineKernel());
+}
+
+
+TEST(vectorLanes, SurfaceGatherLeavesOutTheColumnsTheForceScatterLeavesOut)
+{
+    checkSurfaceGatherLeavesOut<linearKernel, true>(linearKernel());
+    checkSurfaceGatherLeavesOut<GIMPKernel, false>(gimp());
+    checkSurfaceGatherLeavesOut<quadraticBSplineKernel, true>
+    (
+        quadraticBSplineKernel()
+    );
 }
 
 

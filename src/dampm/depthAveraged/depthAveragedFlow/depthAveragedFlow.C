@@ -445,7 +445,8 @@ Foam::depthAveragedFlow::depthAveragedFlow
     prepared_(false),
     binningChecked_(false),
     terrainFree_(false),
-    forcesDone_(false)
+    forcesDone_(false),
+    surfaceLeft_(false)
 {
     knownKeywords::add
     (
@@ -560,18 +561,54 @@ void Foam::depthAveragedFlow::readState(const dictionary& state)
 }
 
 
-void Foam::depthAveragedFlow::particlesToGrid()
+Foam::label Foam::depthAveragedFlow::surfaceToColumns
+(
+    const keptSums& leftOut
+)
+{
+    const gridGeometry& g = grid_.geometry();
+    const shallowColumns cols = columns();
+    label nLeft = 0;
+    visitShape
+    (
+        *shape_,
+        [&](const auto& kernel)
+        {
+            typedef std::decay_t<decltype(kernel)> K;
+            staticSwitches
+            (
+                [&](auto terrain)
+                {
+                    nLeft = gatherSurface<K, terrain()>
+                    (
+                        g, kernel, nodes_, cols, hMin_, slopeCorrection_,
+                        leftOut
+                    );
+                },
+                !terrainFree_
+            );
+        }
+    );
+    surfaceLeft_ = nLeft > 0;
+    return nLeft;
+}
+
+
+void Foam::depthAveragedFlow::particlesToGrid(const bool output)
 {
     if (prepared_)
     {
+        if (output && surfaceLeft_)
+        {
+            // The written fields of the columns S5 left out
+            surfaceToColumns(keptSums());
+        }
         return;
     }
     const gridGeometry& g = grid_.geometry();
     const gridDecomposition& parts = grid_.decomposition();
-    if (!binningChecked_)
-    {
-        particles_.sortByCell(g, schedule_);
-    }
+    const bool sorted =
+        !binningChecked_ && particles_.sortByCell(g, schedule_);
     binningChecked_ = false;
 
     // Work on the nodes the columns touch, and clear those of last step
@@ -584,14 +621,11 @@ void Foam::depthAveragedFlow::particlesToGrid()
     sharedNodes_ = parts.shareNodes(stencilNodes_);
     activeNodes_.unite(stencilNodes_);
     activeNodes_.unite(sharedNodes_);
+    const bool keepLoads = !fusedGather() && !rheology_->active();
     kept_ =
         Pstream::parRun()
       ? keptSums()
-      : resting_.keptNodes
-        (
-            g, !fusedGather() && !rheology_->active(),
-            particles_.binChanges()
-        );
+      : resting_.keptNodes(g, keepLoads, particles_.binChanges());
     particles_.clearBinChanges();
     zeroNodes(g, activeNodes_, nodes_, kept_);
 
@@ -607,7 +641,10 @@ void Foam::depthAveragedFlow::particlesToGrid()
         [&](const auto& kernel)
         {
             const label nLeft = scatterMomentum(scatter, kernel, nodes_, cols);
-            resting_.countScatter(false, cols.n, nLeft);
+            resting_.countLeftOut
+            (
+                restingColumns::momentumScatter, cols.n, nLeft
+            );
         }
     );
     parts.sumNodes(nodes_.momentum.data(), shallowGrid::nMomentum);
@@ -617,45 +654,45 @@ void Foam::depthAveragedFlow::particlesToGrid()
         kappaNode_.data()
     );
 
-    // S5, or S5 and S7 together when no model comes between them
+    // S5 and S7 together when no model comes between them
     forcesDone_ = fusedGather();
-    visitShape
-    (
-        *shape_,
-        [&](const auto& kernel)
-        {
-            typedef std::decay_t<decltype(kernel)> K;
-            staticSwitches
-            (
-                [&](auto terrain)
-                {
-                    if (forcesDone_)
+    if (forcesDone_)
+    {
+        const columnScatter every{g, stencilNodes_, schedule_, binStart};
+        visitShape
+        (
+            *shape_,
+            [&](const auto& kernel)
+            {
+                typedef std::decay_t<decltype(kernel)> K;
+                staticSwitches
+                (
+                    [&](auto terrain)
                     {
-                        const columnScatter every
-                        {
-                            g, stencilNodes_, schedule_, binStart
-                        };
                         scatterForces<K, true, false, false, true, terrain()>
                         (
                             every, kernel, nodes_, cols, rho_, g_, hMin_,
                             slopeCorrection_
                         );
-                    }
-                    else
-                    {
-                        gatherSurface<K, terrain()>
-                        (
-                            g, kernel, nodes_, cols, hMin_, slopeCorrection_
-                        );
-                    }
-                },
-                !terrainFree_
-            );
-        }
-    );
-    if (forcesDone_)
-    {
+                    },
+                    !terrainFree_
+                );
+            }
+        );
         parts.sumNodes(nodes_.loads.data(), shallowGrid::nLoads);
+    }
+    else
+    {
+        // S5 leaves out the columns that S7 will. What it writes for them
+        // is read by S6 and S7 only, but h_p and grad Z (the time step, the
+        // totals), which the moves since their last S5 carried unless S2's
+        // sort left them behind, and the written A and Zb, which no move
+        // carries
+        const label nLeft = surfaceToColumns
+        (
+            keepLoads && !sorted && !output ? kept_.of(true) : keptSums()
+        );
+        resting_.countLeftOut(restingColumns::surfaceGather, cols.n, nLeft);
     }
     prepared_ = true;
 }
@@ -792,7 +829,10 @@ void Foam::depthAveragedFlow::computeForces()
                         (
                             scatter, kernel, nodes_, cols, rho_, g_
                         );
-                    resting_.countScatter(true, cols.n, nLeft);
+                    resting_.countLeftOut
+                    (
+                        restingColumns::forceScatter, cols.n, nLeft
+                    );
                 },
                 pressureForm_ == pressureFormType::gradient, stress, basal
             );
@@ -947,7 +987,7 @@ void Foam::depthAveragedFlow::removeOutflowAndPlaceSplit(const label nSplit)
 
 void Foam::depthAveragedFlow::updateOutputFields()
 {
-    particlesToGrid();
+    particlesToGrid(true);
 
     const fvMesh& mesh = grid_.mesh();
     const scalar zLo = mesh.bounds().min().z();

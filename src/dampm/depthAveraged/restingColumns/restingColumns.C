@@ -33,8 +33,8 @@ Foam::restingColumns::restingColumns()
     ci1_(0),
     cj0_(0),
     cj1_(0),
-    nScattered_{0, 0},
-    nScatterLeft_{0, 0}
+    nPassed_{0, 0, 0},
+    nPassLeft_{0, 0, 0}
 {}
 
 
@@ -255,9 +255,9 @@ Foam::keptSums Foam::restingColumns::keptNodes
         }
     }
 
-    // S3 kept where the cells c - 3 .. c + 2 are stable; S7 where the nodes
+    // S3 kept where the cells c - 2 .. c + 1 are stable; S7 where the nodes
     // within 3 keep S3
-    window<true>(stable_, kept3_, w, h, -3, 2);
+    window<true>(stable_, kept3_, w, h, -2, 1);
     if (loads)
     {
         window<true>(kept3_, kept7_, w, h, -3, 3);
@@ -338,17 +338,21 @@ void Foam::restingColumns::report(Ostream& os) const
             << " of " << n << " column-updates ("
             << 100*nLeft/n << " %)" << nl << endl;
     }
-    const char* names[2] = {"mass and momentum (S3)", "forces (S7)"};
-    for (const bool loads : {false, true})
+    const char* names[nPasses] =
     {
-        const scalar nS = returnReduce(nScattered_[loads], sumOp<scalar>());
-        const scalar nOut =
-            returnReduce(nScatterLeft_[loads], sumOp<scalar>());
+        "scatter of mass and momentum (S3)",
+        "gather of the surface (S5)",
+        "scatter of forces (S7)"
+    };
+    for (int p = 0; p < nPasses; ++p)
+    {
+        const scalar nP = returnReduce(nPassed_[p], sumOp<scalar>());
+        const scalar nOut = returnReduce(nPassLeft_[p], sumOp<scalar>());
         if (nOut > 0)
         {
-            os  << "Columns at rest left out of the scatter of "
-                << names[loads] << ": " << nOut << " of " << nS
-                << " column-updates (" << 100*nOut/nS << " %)" << nl << endl;
+            os  << "Columns at rest left out of the " << names[p] << ": "
+                << nOut << " of " << nP << " column-updates ("
+                << 100*nOut/nP << " %)" << nl << endl;
         }
     }
 }
