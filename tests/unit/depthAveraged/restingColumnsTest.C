@@ -15,7 +15,9 @@ Description
     moves again, by up to 0.85 cells a step, and after a column is changed
     outside S9 (woken). No map in the first step, after a step that may
     have moved a column by restingColumns::maxMove cells, or when too few
-    nodes rest.
+    nodes rest. After every step, the node sums the next step keeps
+    (keptNodes) are those of their definition, node by node and cell by
+    cell, with some cells' columns given another bin.
 
 \*---------------------------------------------------------------------------*/
 
@@ -105,6 +107,12 @@ struct restSteps
     splitRule rule;
     const double dt = 0.25;
 
+    //- The cells woken in this step, and the steps after which some node
+    //  kept its sums
+    std::vector<gridGeometry::index> woken;
+    int nKeeping = 0;
+    std::mt19937 binGen{11};
+
     explicit restSteps(const Kernel& k)
     :
         kernel(k),
@@ -155,6 +163,17 @@ struct restSteps
         );
         const uint8_t* quiet = resting.quietCells(g);
         const domainSides sides;
+
+        // Does this step move every column by less than maxMove cells?
+        double maxSpeed2 = 0;
+        for (label n = 0; n < g.nNodes(); ++n)
+        {
+            const double* v = grid.velocity.data() + shallowGrid::nVelocity*n;
+            maxSpeed2 = std::max(maxSpeed2, v[0]*v[0] + v[1]*v[1]);
+        }
+        const double reach = restingColumns::maxMove*std::min(g.dx[0], g.dx[1]);
+        const bool bounded = dt*dt*maxSpeed2 < reach*reach;
+
         const columnMotion qa = a.motion(), qb = b.motion();
         const label nA = gridToColumns
         (
@@ -167,10 +186,138 @@ struct restSteps
             columnAdvance(g, sides, dt, true, rule, qb)
         );
         EXPECT_EQ(nA, nB);
+        woken.clear();
         changed();
         splitMarked();
         resting.endStep(g, dt);
+        checkKept(bounded ? quiet : nullptr);
         return quiet;
+    }
+
+    //- Column (x, y) changed outside S9
+    void wake(const double x, const double y)
+    {
+        resting.wake(g, x, y);
+        woken.push_back(g.cellIndex(g.cellDir(0, x), g.cellDir(1, y), 0));
+    }
+
+    //- keptNodes against its definition (restingColumns.H): S3 kept at a
+    //  node whose cells c - 2 .. c + 1 per axis are all stable (quiet, not
+    //  woken, no column given another bin), S7 where the nodes within 3
+    //  keep S3; per cell, do its nodes c - 1 .. c + 2 keep, any or all?
+    //  (A cell at its first node c + nGhost; none outside the grid.) No
+    //  cell is stable without a map (quiet null)
+    void checkKept(const uint8_t* quiet)
+    {
+        typedef gridGeometry::index index;
+        const index nCx = g.nCells[0], nCy = g.nCells[1];
+        const index nx = g.nNodesDir[0], ny = g.nNodesDir[1];
+        const index nG = gridGeometry::nGhost;
+
+        // Some cells' columns given another bin by a re-bin
+        std::vector<uint8_t> binChanged(nCx*nCy, 0);
+        std::uniform_int_distribution<index> anyCell(0, nCx*nCy - 1);
+        for (int k = 0; k < 5; ++k)
+        {
+            binChanged[anyCell(binGen)] = 1;
+        }
+        const keptSums kept = resting.keptNodes(g, true, binChanged.data());
+
+        std::vector<uint8_t> stable(nCx*nCy, 0);
+        for (index c = 0; quiet && c < nCx*nCy; ++c)
+        {
+            stable[c] = quiet[c] && !binChanged[c];
+        }
+        for (const index c : woken)
+        {
+            stable[c] = 0;
+        }
+        // All of f over the window lo .. hi per axis of node (i, j)
+        const auto all = [&]
+        (
+            const index i, const index j, const int lo, const int hi,
+            const std::function<bool(index, index)>& f
+        )
+        {
+            bool a = true;
+            for (int b = lo; b <= hi; ++b)
+            {
+                for (int d = lo; d <= hi; ++d)
+                {
+                    a = a && f(i + d, j + b);
+                }
+            }
+            return a;
+        };
+        const auto stableCell = [&](const index ci, const index cj)
+        {
+            return
+                ci >= 0 && ci < nCx && cj >= 0 && cj < nCy
+             && stable[ci + nCx*cj];
+        };
+        const auto keeps3 = [&](const index i, const index j)
+        {
+            return
+                i >= 0 && i < nx && j >= 0 && j < ny
+             && all(i - nG, j - nG, -2, 1, stableCell);
+        };
+
+        std::vector<uint8_t> nodes(nx*ny, 0);
+        bool any = false;
+        for (index j = 0; j < ny; ++j)
+        {
+            for (index i = 0; i < nx; ++i)
+            {
+                const bool k3 = keeps3(i, j);
+                const bool k7 = k3 && all(i, j, -3, 3, keeps3);
+                nodes[i + nx*j] = uint8_t
+                (
+                    (k3 ? keptSums::momentumKept : 0)
+                  | (k7 ? keptSums::loadsKept : 0)
+                );
+                any = any || k3;
+            }
+        }
+        nKeeping += any;
+        ASSERT_EQ(kept.nodes != nullptr, any);
+        if (!any)
+        {
+            return;
+        }
+        for (index n = 0; n < nx*ny; ++n)
+        {
+            ASSERT_EQ(kept.nodes[n], nodes[n]) << "node " << n;
+        }
+        for (index cj = 0; cj < nCy; ++cj)
+        {
+            for (index ci = 0; ci < nCx; ++ci)
+            {
+                uint8_t code = 0;
+                for (const bool loads : {false, true})
+                {
+                    const keptSums k = keptSums().of(loads);
+                    const auto keeps = [&](const index i, const index j)
+                    {
+                        return
+                            i >= 0 && i < nx && j >= 0 && j < ny
+                         && (nodes[i + nx*j] & k.node);
+                    };
+                    bool touch = false, every = true;
+                    for (int b = -1; b <= 2; ++b)
+                    {
+                        for (int a = -1; a <= 2; ++a)
+                        {
+                            const bool kn = keeps(ci + nG + a, cj + nG + b);
+                            touch = touch || kn;
+                            every = every && kn;
+                        }
+                    }
+                    code |= (touch ? k.touch : 0) | (every ? k.all : 0);
+                }
+                ASSERT_EQ(kept.cells[ci + nCx*cj], code)
+                    << "cell " << ci << " " << cj;
+            }
+        }
     }
 
     //- As the solver's split: the columns to split change (their
@@ -183,7 +330,7 @@ struct restSteps
             {
                 a.F[0][i] *= 0.5;
                 b.F[0][i] *= 0.5;
-                resting.wake(g, a.x[i], a.y[i]);
+                wake(a.x[i], a.y[i]);
             }
         }
     }
@@ -247,7 +394,7 @@ void checkRestingColumns(const Kernel& kernel)
                 c->F[0][k] = 0.9*t.g.dx[0];
                 c->F[3][k] = 0.9*t.g.dx[1];
             }
-            t.resting.wake(t.g, t.a.x[k], t.a.y[k]);
+            t.wake(t.a.x[k], t.a.y[k]);
         }
     );
     EXPECT_NE(t.step(none), nullptr);
@@ -283,6 +430,7 @@ void checkRestingColumns(const Kernel& kernel)
     EXPECT_TRUE(t.a.same(t.b, t.rule));
     EXPECT_EQ(t.step(none), nullptr);
     EXPECT_TRUE(t.a.same(t.b, t.rule));
+    EXPECT_GT(t.nKeeping, 5);
 
     // Fewer than a tenth of the nodes at rest: no map
     t.step(none);

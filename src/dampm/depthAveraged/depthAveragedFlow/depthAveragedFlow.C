@@ -683,11 +683,12 @@ void Foam::depthAveragedFlow::particlesToGrid(const bool output)
     }
     else
     {
-        // S5 leaves out the columns that S7 will. What it writes for them
-        // is read by S6 and S7 only, but h_p and grad Z (the time step, the
-        // totals), which the moves since their last S5 carried unless S2's
-        // sort left them behind, and the written A and Zb, which no move
-        // carries
+        // S5 leaves out the columns that S7 will, whose nodes keep their
+        // masses: it would write what it wrote for them last. S6 and S7,
+        // which add nothing of them, read all of it; the time step and the
+        // totals h_p and grad Z, which every move of S10 carries but S2's
+        // re-sort does not; the output A and Zb too, which no move carries.
+        // So S5 takes every column after a re-sort and for the output
         const label nLeft = surfaceToColumns
         (
             keepLoads && !sorted && !output ? kept_.of(true) : keptSums()
