@@ -373,14 +373,18 @@ void Foam::depthAveragedFlow::markTransientFields()
     // Written by S5 (or, z and its velocity, for the output) after every
     // sort before anything reads them: the sort need not move them. The
     // totals and the hand-off's test read h and grad Z after a removal (or
-    // the re-sort that makes it), so a removal moves those
+    // the re-sort that makes it), and S5 leaves out columns at rest (but
+    // after S2's re-sort), whose h and grad Z stay from their last S5: so a
+    // removal moves those
     particles_.markTransient(fields_.h());
     particles_.markTransient(fields_.gradZ(), 2);
 
     // Written by S5 and S6 (z and its velocity for the output only, which
     // nothing else reads in 2D: the bins, stencils and parts take x and y)
     // before anything reads them after a removal too, or one value for
-    // every column (a flat bed's): neither a sort nor a removal moves them
+    // every column (a flat bed's): neither a sort nor a removal moves them.
+    // Of a column S5 leaves out, S6 and S7 read stale values (another
+    // column's after a removal), whose results add to no node
     particles_.markRecomputed(fields_.A());
     particles_.markRecomputed(fields_.gradZeta(), 2);
     particles_.markRecomputed(fields_.kappa());
@@ -607,8 +611,11 @@ void Foam::depthAveragedFlow::particlesToGrid(const bool output)
     }
     const gridGeometry& g = grid_.geometry();
     const gridDecomposition& parts = grid_.decomposition();
-    const bool sorted =
-        !binningChecked_ && particles_.sortByCell(g, schedule_);
+    bool sorted = false;
+    if (!binningChecked_)
+    {
+        sorted = particles_.sortByCell(g, schedule_);
+    }
     binningChecked_ = false;
 
     // Work on the nodes the columns touch, and clear those of last step
@@ -683,12 +690,13 @@ void Foam::depthAveragedFlow::particlesToGrid(const bool output)
     }
     else
     {
-        // S5 leaves out the columns that S7 will, whose nodes keep their
-        // masses: it would write what it wrote for them last. S6 and S7,
-        // which add nothing of them, read all of it; the time step and the
-        // totals h_p and grad Z, which every move of S10 carries but S2's
-        // re-sort does not; the output A and Zb too, which no move carries.
-        // So S5 takes every column after a re-sort and for the output
+        // S5 leaves out the columns whose nodes all keep S7's loads (and
+        // so their masses): it would write what it wrote for them last. Of
+        // that, S6 and S7 read all, but add nothing of these columns; the
+        // time step, the totals and the hand-off's test read h_p and grad Z,
+        // which every move of S10 carries but S2's re-sort does not; the
+        // output reads A and Zb too, which no move carries. So S5 takes
+        // every column after a re-sort and for the output
         const label nLeft = surfaceToColumns
         (
             keepLoads && !sorted && !output ? kept_.of(true) : keptSums()

@@ -269,8 +269,8 @@ Foam::keptSums Foam::restingColumns::keptNodes
 
     const index nx = g.nNodesDir[0], ny = g.nNodesDir[1];
     keptNodes_.assign(g.nNodes(), 0);
-    bool any = false;
-    #pragma omp parallel for schedule(static) reduction(||:any)
+    uint8_t somewhere = 0;
+    #pragma omp parallel for schedule(static) reduction(|:somewhere)
     for (index b = 0; b < h; ++b)
     {
         const index jj = y0 + b;
@@ -280,18 +280,19 @@ Foam::keptSums Foam::restingColumns::keptNodes
         }
         const uint8_t* k3 = kept3_.data() + size_t(w)*b;
         const uint8_t* k7 = kept7_.data() + size_t(w)*b;
-        uint8_t rowAny = 0;
+        uint8_t rowBits = 0;
         for (index a = std::max(-x0, index(0)); a < w && x0 + a < nx; ++a)
         {
-            rowAny |= k3[a];
-            keptNodes_[x0 + a + size_t(nx)*jj] = uint8_t
+            const uint8_t bits = uint8_t
             (
                 k3[a]*keptSums::momentumKept | k7[a]*keptSums::loadsKept
             );
+            rowBits |= bits;
+            keptNodes_[x0 + a + size_t(nx)*jj] = bits;
         }
-        any = any || rowAny;
+        somewhere |= rowBits;
     }
-    if (!any)
+    if (!somewhere)
     {
         // The scatters then take every column without looking
         return keptSums();
@@ -324,6 +325,7 @@ Foam::keptSums Foam::restingColumns::keptNodes
     keptSums k;
     k.nodes = keptNodes_.data();
     k.cells = cellCodes_.data();
+    k.somewhere = somewhere;
     return k;
 }
 
