@@ -628,11 +628,14 @@ void Foam::depthAveragedFlow::particlesToGrid(const bool output)
     sharedNodes_ = parts.shareNodes(stencilNodes_);
     activeNodes_.unite(stencilNodes_);
     activeNodes_.unite(sharedNodes_);
-    const bool keepLoads = !fusedGather() && !rheology_->active();
     kept_ =
         Pstream::parRun()
       ? keptSums()
-      : resting_.keptNodes(g, keepLoads, particles_.binChanges());
+      : resting_.keptNodes
+        (
+            g, !fusedGather() && !rheology_->active(),
+            particles_.binChanges()
+        );
     particles_.clearBinChanges();
     zeroNodes(g, activeNodes_, nodes_, kept_);
 
@@ -696,10 +699,11 @@ void Foam::depthAveragedFlow::particlesToGrid(const bool output)
         // time step, the totals and the hand-off's test read h_p and grad Z,
         // which every move of S10 carries but S2's re-sort does not; the
         // output reads A and Zb too, which no move carries. So S5 takes
-        // every column after a re-sort and for the output
+        // every column after a re-sort and for the output (and where no
+        // node keeps loads, the view has no maps)
         const label nLeft = surfaceToColumns
         (
-            keepLoads && !sorted && !output ? kept_.of(true) : keptSums()
+            !sorted && !output ? kept_.of(true) : keptSums()
         );
         resting_.countLeftOut(restingColumns::surfaceGather, cols.n, nLeft);
     }
