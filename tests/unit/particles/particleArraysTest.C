@@ -842,6 +842,34 @@ markedParticles withHalves
     return m;
 }
 
+//- The order a placement gives (the old index of each particle): each kept
+//  particle of the n before the append, then its kept halves
+std::vector<label> placedOrder
+(
+    const label n,
+    const std::vector<label>& parents,
+    const std::vector<char>& flagged
+)
+{
+    std::vector<label> from;
+    const label nHalves = label(parents.size());
+    for (label i = 0, k = 0; i < n; ++i)
+    {
+        if (!flagged[i])
+        {
+            from.push_back(i);
+        }
+        for (; k < nHalves && parents[k] == i; ++k)
+        {
+            if (!flagged[n + k])
+            {
+                from.push_back(n + k);
+            }
+        }
+    }
+    return from;
+}
+
 //- The binning's starts are those a count of its bins gives (empty bins
 //  included), and the next sort keeps it
 void expectBinningOfACount
@@ -911,22 +939,7 @@ TEST(particleArrays, AppendedPlacedAfterTheirParentsKeepTheBinning)
                 nFlagged
             );
 
-            // Each kept particle, then its kept halves
-            std::vector<label> from;
-            for (label i = 0, k = 0; i < n; ++i)
-            {
-                if (!flagged[i])
-                {
-                    from.push_back(i);
-                }
-                for (; k < nHalves && parents[k] == i; ++k)
-                {
-                    if (!flagged[first + k])
-                    {
-                        from.push_back(first + k);
-                    }
-                }
-            }
+            const std::vector<label> from = placedOrder(n, parents, flagged);
             ASSERT_EQ(p.size(), label(from.size()));
             for (label k = 0; k < p.size(); ++k)
             {
@@ -997,6 +1010,94 @@ TEST(particleArrays, AppendedAfterTheLastParticleStaysOrMovesDownByTheRemoved)
         }
         EXPECT_EQ(p.component(m.id)[p.size() - 1], n);
         expectBinningOfACount(p, g, o);
+    }
+}
+
+
+TEST(particleArrays, PlacingMovesOnlyTheParticlesBetweenTheFirstChangeAndTheLast)
+{
+    // Halves placed and particles removed near the start of the arrays:
+    // the particles after the last change stay where they are in memory
+    // (each array's start moves by their shift, into the room kept before
+    // it); near the end those before the first change stay. Removals alone
+    // (removeFlagged) the same. Placements that outgrow the room make the
+    // arrays anew. The values are those of the order every time, on any
+    // number of threads
+    const gridGeometry g = grid2D();
+    const tileCellOrder o(g, 4);
+    const label n = 20000;
+    std::vector<label> many;
+    for (label i = 0; i < 3000; ++i)
+    {
+        many.push_back(10 + i);
+    }
+    struct change
+    {
+        std::vector<label> parents, removed;
+        label firstStaying, lastStaying;
+    };
+    const change changes[] =
+    {
+        {{5, 40, 40, 41}, {7, 100, n + 1}, 101, n - 1},
+        {{n - 50, n - 10}, {n - 3}, 0, n - 50},
+        {{}, {3, 9, 10}, 11, n - 1},
+        {{}, {n - 3}, 0, n - 4},
+        {many, {}, n, n - 1}
+    };
+    for (const change& ch : changes)
+    {
+        for (const int nThreads : {1, 2, 3})
+        {
+            const threadCount threads(nThreads);
+            markedParticles m = withHalves(g, o, n, ch.parents);
+            particleArrays& p = m.p;
+            std::vector<char> flagged(p.size(), 0);
+            for (const label i : ch.removed)
+            {
+                flagged[i] = 1;
+            }
+            std::vector<const double*> idAt(p.size()), xAt(p.size());
+            for (label i = 0; i < p.size(); ++i)
+            {
+                idAt[i] = p.component(m.id) + i;
+                xAt[i] = p.component(particleArrays::X) + i;
+            }
+            const particleArrays before = p;
+            if (ch.parents.empty())
+            {
+                p.removeFlagged(flagged);
+            }
+            else
+            {
+                p.removeAndPlaceAppended(flagged, ch.parents, g, o, 1);
+            }
+
+            const std::vector<label> from =
+                placedOrder(n, ch.parents, flagged);
+            ASSERT_EQ(p.size(), label(from.size()));
+            label nStayed = 0;
+            for (label k = 0; k < p.size(); ++k)
+            {
+                const label i = from[k];
+                EXPECT_EQ(p.component(m.id)[k], before.component(m.id)[i]);
+                EXPECT_EQ
+                (
+                    p.component(particleArrays::X)[k],
+                    before.component(particleArrays::X)[i]
+                );
+                if (i >= ch.firstStaying && i <= ch.lastStaying)
+                {
+                    EXPECT_EQ(p.component(m.id) + k, idAt[i]) << i;
+                    EXPECT_EQ(p.component(particleArrays::X) + k, xAt[i]);
+                    ++nStayed;
+                }
+            }
+            EXPECT_EQ
+            (
+                nStayed,
+                std::max(ch.lastStaying - ch.firstStaying + 1, label(0))
+            );
+        }
     }
 }
 

@@ -226,6 +226,7 @@ Foam::label Foam::particleArrays::addField
     {
         components_.emplace_back(size_, initialValue);
         components_.back().reserve(cell_.capacity());
+        offset_.push_back(0);
         transient_.push_back(false);
         recomputed_.push_back(false);
     }
@@ -298,9 +299,9 @@ Foam::particleArrays::field(const word& name) const
 
 void Foam::particleArrays::reserve(const label n)
 {
-    for (componentArray& c : components_)
+    for (size_t c = 0; c < components_.size(); ++c)
     {
-        c.reserve(n);
+        components_[c].reserve(offset_[c] + n);
     }
     cell_.reserve(n);
     order_.reserve(n);
@@ -326,11 +327,19 @@ Foam::label Foam::particleArrays::append(const label n)
 {
     const label first = size_;
     size_ += n;
+    // A set filled from empty (seeded, read) starts with room before and
+    // after it for the placements
+    const label room = first == 0 ? roomFor(size_) : 0;
     for (const fieldInfo& f : fields_)
     {
         for (label c = f.first; c < f.first + f.nComponents; ++c)
         {
-            components_[c].resize(size_, f.initialValue);
+            if (first == 0)
+            {
+                offset_[c] = room;
+                components_[c].reserve(size_ + 2*room);
+            }
+            components_[c].resize(offset_[c] + size_, f.initialValue);
         }
     }
     cell_.resize(size_, 0);
@@ -346,16 +355,20 @@ Foam::label Foam::particleArrays::removeFlagged
 {
     checkFlagSize(flagged, "flags");
 
-    // The runs of particles kept after the first one removed, as [from, to)
-    // pairs: a step removes few particles, so each array moves in a few
-    // long copies, and not at all before its first removal
+    // The runs of particles kept: a step removes few particles, so each
+    // array moves in a few long runs, and neither the part before the
+    // first removal nor (by the shift of its start) the one after the last
     const char* flag = flagged.data();
     const label first = nextFlagged(flag, 0, size_);
     if (first == size_)
     {
         return 0;
     }
-    runs_.clear();
+    moves_.clear();
+    if (first > 0)
+    {
+        moves_.push_back({0, 0, first});
+    }
     label n = first;
     for (label i = first; i < size_;)
     {
@@ -367,38 +380,12 @@ Foam::label Foam::particleArrays::removeFlagged
         i = nextFlagged(flag, i, size_);
         if (i > from)
         {
-            runs_.push_back(from);
-            runs_.push_back(i);
+            moves_.push_back({from, n, i - from});
             n += i - from;
         }
     }
-    const auto compact = [this, first](auto* array)
-    {
-        label to = first;
-        for (size_t r = 0; r < runs_.size(); r += 2)
-        {
-            const label len = runs_[r + 1] - runs_[r];
-            std::memmove(array + to, array + runs_[r], len*sizeof(*array));
-            to += len;
-        }
-    };
-
-    #pragma omp parallel for schedule(static)
-    for (label c = 0; c < nComponentArrays(); ++c)
-    {
-        if (!recomputed_[c])
-        {
-            compact(components_[c].data());
-        }
-    }
-    compact(cell_.data());
-    for (componentArray& c : components_)
-    {
-        c.resize(n);
-    }
-    cell_.resize(n);
     const label nRemoved = size_ - n;
-    size_ = n;
+    moveInPlace(n, size_, recomputed_);
 
     // Compaction keeps the order: the binning stays, counted again by the
     // next sortByCell (as a restart's), since an append often comes first
@@ -409,9 +396,10 @@ Foam::label Foam::particleArrays::removeFlagged
 
 void Foam::particleArrays::clear()
 {
-    for (componentArray& c : components_)
+    for (size_t c = 0; c < components_.size(); ++c)
     {
-        c.clear();
+        components_[c].clear();
+        offset_[c] = 0;
     }
     cell_.clear();
     binStart_.clear();
@@ -450,17 +438,25 @@ void Foam::particleArrays::permute
 {
     const bool stream = streamed(n, notMoved);
 
-    scratch_.resize(n);
+    // Each array moved is written with room before and after it, for the
+    // placements that follow
+    const label room = roomFor(n);
     for (size_t c = 0; c < components_.size(); ++c)
     {
         componentArray& array = components_[c];
         if (notMoved[c])
         {
-            array.resize(n);
+            array.resize(offset_[c] + n);
             continue;
         }
-        double* s = scratch_.data();
-        const double* src = array.data();
+        if (label(scratch_.capacity()) < n + room + room/2)
+        {
+            scratch_ = componentArray();
+            scratch_.reserve(n + 2*room);
+        }
+        scratch_.resize(room + n);
+        double* s = scratch_.data() + room;
+        const double* src = component(c);
         const label* ord = order_.data();
 
         if (stream)
@@ -484,7 +480,7 @@ void Foam::particleArrays::permute
             }
         }
         array.swap(scratch_);
-        scratch_.resize(n);
+        offset_[c] = room;
     }
 
     // The bins in their new order (rank_ is free once order_ is made)
@@ -527,10 +523,7 @@ void Foam::particleArrays::findMoves(const label n, const label n0)
             {
                 ++len;
             }
-            if (from != k)
-            {
-                mine.push_back({from, k, len});
-            }
+            mine.push_back({from, k, len});
             k += len;
         }
     }
@@ -542,6 +535,59 @@ void Foam::particleArrays::findMoves(const label n, const label n0)
 }
 
 
+Foam::label Foam::particleArrays::commonShift(const label n0)
+{
+    // Few distinct shifts (one more than the changes of a step at most):
+    // sorted with their particles, and the longest total taken
+    std::vector<std::pair<label, label>>& shifts = shifts_;
+    shifts.clear();
+    for (const run& r : moves_)
+    {
+        if (r.from < n0)
+        {
+            shifts.push_back({r.to - r.from, r.len});
+        }
+    }
+    std::sort(shifts.begin(), shifts.end());
+    label best = 0, bestCount = 0;
+    for (size_t i = 0; i < shifts.size();)
+    {
+        const label shift = shifts[i].first;
+        label count = 0;
+        for (; i < shifts.size() && shifts[i].first == shift; ++i)
+        {
+            count += shifts[i].second;
+        }
+        if (count > bestCount || (count == bestCount && shift == 0))
+        {
+            best = shift;
+            bestCount = count;
+        }
+    }
+    return best;
+}
+
+
+Foam::label Foam::particleArrays::roomFor(const label n)
+{
+    // A sixteenth of the particles (at least 1024), a multiple of a cache
+    // line of doubles
+    return (std::max(label(1024), n/16) + 7)/8*8;
+}
+
+
+double* Foam::particleArrays::renew(const label c, const label n)
+{
+    const label room = roomFor(n);
+    componentArray fresh;
+    fresh.reserve(2*room + n);
+    fresh.resize(room + n);
+    components_[c].swap(fresh);
+    offset_[c] = room;
+    return components_[c].data() + room;
+}
+
+
 void Foam::particleArrays::moveInPlace
 (
     const label n,
@@ -549,7 +595,6 @@ void Foam::particleArrays::moveInPlace
     const std::vector<char>& notMoved
 )
 {
-    findMoves(n, n0);
     const run* const mv = moves_.data();
     const label nMoves = label(moves_.size());
     label nAside = 0;
@@ -558,44 +603,77 @@ void Foam::particleArrays::moveInPlace
         nAside += r.from >= n0 ? r.len : 0;
     }
 
-    // The kept particles keep their order, so a run moving down lands on
-    // its own source or on places whose particles were removed or went
-    // down before it, and one moving up, taken from the end, on its own
-    // source or on places whose particles were removed, went up before it
-    // or were appended (put aside first)
+    // The start of each array of values moves by the shift that most of
+    // the kept particles take, so that they stay where they are in memory:
+    // a step's few splits are near one end or the other of the arrays
+    // (those of the flow still moving), and most of the particles after
+    // the last split or before the first stay. An array with no room for
+    // it is made anew, with room, and its particles copied
+    const label shift = commonShift(n0);
+
+    // Each run moves from a[o + from] to a[o2 + to]. The kept particles
+    // keep their order, so a run moving down lands on its own source or
+    // on places whose particles were removed or went down before it, and
+    // one moving up, taken from the end, on its own source or on places
+    // whose particles were removed, went up before it or were appended
+    // (put aside first)
     const bool stream = streamed(n, notMoved);
-    const auto move = [&](auto* a, auto* aside)
+    const auto move = [&]
+    (
+        auto* a,
+        const label o,
+        const label o2,
+        auto* aside
+    )
     {
         const size_t size = sizeof(*a);
         for (label r = 0, s = 0; r < nMoves; ++r)
         {
             if (mv[r].from >= n0)
             {
-                std::memcpy(aside + s, a + mv[r].from, mv[r].len*size);
+                std::memcpy(aside + s, a + o + mv[r].from, mv[r].len*size);
                 s += mv[r].len;
             }
         }
         for (label r = 0; r < nMoves; ++r)
         {
-            if (mv[r].from < n0 && mv[r].to < mv[r].from)
+            if (mv[r].from < n0 && o2 + mv[r].to < o + mv[r].from)
             {
-                moveValues(a, mv[r].to, mv[r].from, mv[r].len, stream);
+                moveValues
+                (
+                    a, o2 + mv[r].to, o + mv[r].from, mv[r].len, stream
+                );
             }
         }
         for (label r = nMoves - 1; r >= 0; --r)
         {
-            if (mv[r].from < n0 && mv[r].to > mv[r].from)
+            if (mv[r].from < n0 && o2 + mv[r].to > o + mv[r].from)
             {
-                moveValues(a, mv[r].to, mv[r].from, mv[r].len, stream);
+                moveValues
+                (
+                    a, o2 + mv[r].to, o + mv[r].from, mv[r].len, stream
+                );
             }
         }
         for (label r = 0, s = 0; r < nMoves; ++r)
         {
             if (mv[r].from >= n0)
             {
-                std::memcpy(a + mv[r].to, aside + s, mv[r].len*size);
+                std::memcpy(a + o2 + mv[r].to, aside + s, mv[r].len*size);
                 s += mv[r].len;
             }
+        }
+    };
+
+    // Into an array made anew: every run copied
+    const auto copy = [&](const double* from, double* to)
+    {
+        for (label r = 0; r < nMoves; ++r)
+        {
+            std::memcpy
+            (
+                to + mv[r].to, from + mv[r].from, mv[r].len*sizeof(double)
+            );
         }
     };
 
@@ -616,18 +694,31 @@ void Foam::particleArrays::moveInPlace
         {
             if (c == nArrays)
             {
-                move(cell_.data(), rank_.data());
+                move(cell_.data(), 0, 0, rank_.data());
+                continue;
             }
-            else if (!notMoved[c])
+            componentArray& array = components_[c];
+            const label o = offset_[c];
+            const label o2 = o - shift;
+            if (notMoved[c])
             {
-                move(components_[c].data(), aside);
+                array.resize(o + n);
+            }
+            else if (o2 >= 0 && o2 + n <= label(array.capacity()))
+            {
+                array.resize(std::max(label(array.size()), o2 + n));
+                move(array.data(), o, o2, aside);
+                array.resize(o2 + n);
+                offset_[c] = o2;
+            }
+            else
+            {
+                componentArray old;
+                old.swap(array);
+                copy(old.data() + o, renew(c, n));
             }
         }
         streamFence();
-    }
-    for (componentArray& array : components_)
-    {
-        array.resize(n);
     }
     cell_.resize(n);
     size_ = n;
@@ -1190,6 +1281,7 @@ Foam::label Foam::particleArrays::removeAndPlaceAppended
     }
 
     const label nRemoved = size_ - n;
+    findMoves(n, n0);
     moveInPlace(n, n0, recomputed_);
     binned_ = true;
     return nRemoved;
