@@ -125,6 +125,32 @@ TEST(particleArrays, AppendedParticlesTakeTheFieldsInitialValue)
     EXPECT_EQ(p.component(h)[0], 7);
     EXPECT_EQ(p.component(h)[4], 2.5);
     EXPECT_EQ(p.component(particleArrays::M)[4], 0);
+
+    // Also after every particle was removed (the first ones before the
+    // others, which moves the arrays' start into their buffers), with and
+    // without the memory beyond the particles returned
+    for (const bool shrunk : {false, true})
+    {
+        const label n = 5000;
+        p.append(n - p.size());
+        std::fill_n(p.component(h), n, -1.0);
+        for (const label nRemoved : {n/2, n/2})
+        {
+            std::vector<char> flagged(p.size(), 0);
+            std::fill_n(flagged.begin(), nRemoved, 1);
+            p.removeFlagged(flagged);
+        }
+        ASSERT_EQ(p.size(), 0);
+        if (shrunk)
+        {
+            p.shrink();
+        }
+        p.append(10);
+        for (label i = 0; i < 10; ++i)
+        {
+            EXPECT_EQ(p.component(h)[i], 2.5) << i;
+        }
+    }
 }
 
 

@@ -299,21 +299,28 @@ Foam::particleArrays::field(const word& name) const
 
 void Foam::particleArrays::reserve(const label n)
 {
+    // With the room that the arrays keep before and after the particles
+    const label room = roomFor(n);
     for (size_t c = 0; c < components_.size(); ++c)
     {
-        components_[c].reserve(offset_[c] + n);
+        components_[c].reserve(std::max(offset_[c], room) + n + room);
     }
     cell_.reserve(n);
     order_.reserve(n);
-    scratch_.reserve(n);
+    scratch_.reserve(n + 2*room);
 }
 
 
 void Foam::particleArrays::shrink()
 {
-    for (componentArray& c : components_)
+    // Each array in a buffer with only the room kept for the placements (a
+    // removal may have left its start far into its buffer)
+    for (label c = 0; c < nComponentArrays(); ++c)
     {
-        c.shrink_to_fit();
+        componentArray old;
+        old.swap(components_[c]);
+        const double* from = old.data() + offset_[c];
+        std::copy(from, from + size_, renew(c, size_));
     }
     cell_.shrink_to_fit();
     order_.clear();
@@ -336,6 +343,7 @@ Foam::label Foam::particleArrays::append(const label n)
         {
             if (first == 0)
             {
+                components_[c].clear();
                 offset_[c] = room;
                 components_[c].reserve(size_ + 2*room);
             }
@@ -607,8 +615,7 @@ void Foam::particleArrays::moveInPlace
     // the kept particles take, so that they stay where they are in memory:
     // a step's few splits are near one end or the other of the arrays
     // (those of the flow still moving), and most of the particles after
-    // the last split or before the first stay. An array with no room for
-    // it is made anew, with room, and its particles copied
+    // the last split or before the first stay
     const label shift = commonShift(n0);
 
     // Each run moves from a[o + from] to a[o2 + to]. The kept particles
@@ -699,12 +706,21 @@ void Foam::particleArrays::moveInPlace
             }
             componentArray& array = components_[c];
             const label o = offset_[c];
-            const label o2 = o - shift;
+            const label capacity = label(array.capacity());
+            label o2 = o - shift;
+            if (o2 < 0 || o2 + n > capacity)
+            {
+                // No room for the shift: the start put back at the room's
+                // distance where the buffer holds it (every particle
+                // moves), else the array is made anew
+                const label room = roomFor(n);
+                o2 = n + 2*room <= capacity ? room : -1;
+            }
             if (notMoved[c])
             {
                 array.resize(o + n);
             }
-            else if (o2 >= 0 && o2 + n <= label(array.capacity()))
+            else if (o2 >= 0)
             {
                 array.resize(std::max(label(array.size()), o2 + n));
                 move(array.data(), o, o2, aside);

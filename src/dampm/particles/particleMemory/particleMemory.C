@@ -87,11 +87,12 @@ double Foam::particleMemory::bytesPerParticle
     const particleArrays& particles
 )
 {
-    // A double per component, the sort's scratch component, the cell and the
-    // sort's order (labels), and the solvers' work arrays
+    // A double per component and the sort's scratch component, each with
+    // the room kept before and after the particles (an eighth), the cell
+    // and the sort's order (labels), and the solvers' work arrays
     return
-        sizeof(double)*(particles.nComponentArrays() + 1) + 2*sizeof(label)
-      + workBytes;
+        1.125*sizeof(double)*(particles.nComponentArrays() + 1)
+      + 2*sizeof(label) + workBytes;
 }
 
 
