@@ -364,8 +364,9 @@ Foam::label Foam::particleArrays::removeFlagged
     checkFlagSize(flagged, "flags");
 
     // The runs of particles kept: a step removes few particles, so each
-    // array moves in a few long runs, and neither the part before the
-    // first removal nor (by the shift of its start) the one after the last
+    // array moves in a few long runs, and the particles of the shift most
+    // of them take (before the first removal, or, by the shift of the
+    // array's start, after the last) not at all
     const char* flag = flagged.data();
     const label first = nextFlagged(flag, 0, size_);
     if (first == size_)
