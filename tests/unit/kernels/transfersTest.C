@@ -18,6 +18,7 @@ Description
 #include "particleTransfers.H"
 #include "shapeKernels.H"
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <random>
 #ifdef _OPENMP
 #include <omp.h>
@@ -321,6 +322,64 @@ TEST(transfers, OneAndTwoThreadsGiveIdenticalNodeSums)
     checkThreadIndependence<2>(linearKernel());
     checkThreadIndependence<3>(quadraticBSplineKernel());
     checkThreadIndependence<2>(gimp());
+}
+
+
+TEST(transfers, ScatterTakesEveryParticleOnceOnAnyNumberOfThreads)
+{
+#ifdef _OPENMP
+    // The threads take runs of a colour's tiles as they come free: every
+    // particle once, also with more runs than tiles (many threads) and with
+    // the particles in part of the grid only (empty tiles)
+    const int maxThreads = omp_get_max_threads();
+    for (const int dim : {2, 3})
+    {
+        // Many tiles of each colour
+        const gridGeometry g = uniformGrid
+        (
+            dim, {10, -5, 2}, {0.4, 0.5, 0.25},
+            dim == 2
+          ? std::array<gridGeometry::index, 3>{200, 150, 1}
+          : std::array<gridGeometry::index, 3>{40, 30, 20}
+        );
+        const scatterSchedule schedule(g);
+        particleArrays p = makeParticles(g, dim);
+        const double xMid = 0.5*(g.origin[0] + g.upper(0));
+        std::vector<char> right(p.size(), 0);
+        for (label i = 0; i < p.size(); ++i)
+        {
+            right[i] = p.component(particleArrays::X)[i] > xMid;
+        }
+        p.removeFlagged(right);
+        p.sortByCell(g, schedule);
+        for (const int nThreads : {1, 2, 3, 16})
+        {
+            omp_set_num_threads(nThreads);
+            std::vector<int> visits(p.size(), 0);
+            schedule.scatterRanges
+            (
+                g,
+                p.stencilNodes(g),
+                p.binStart().data(),
+                [&](const label first, const label last)
+                {
+                    for (label i = first; i < last; ++i)
+                    {
+                        #pragma omp atomic
+                        ++visits[i];
+                    }
+                }
+            );
+            EXPECT_EQ
+            (
+                std::count(visits.begin(), visits.end(), 1), p.size()
+            ) << dim << "D, " << nThreads << " threads";
+        }
+    }
+    omp_set_num_threads(maxThreads);
+#else
+    GTEST_SKIP() << "built without OpenMP";
+#endif
 }
 
 
