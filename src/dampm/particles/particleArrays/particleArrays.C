@@ -548,24 +548,23 @@ Foam::label Foam::particleArrays::commonShift(const label n0)
 {
     // Few distinct shifts (one more than the changes of a step at most):
     // sorted with their particles, and the longest total taken
-    std::vector<std::pair<label, label>>& shifts = shifts_;
-    shifts.clear();
+    shifts_.clear();
     for (const run& r : moves_)
     {
         if (r.from < n0)
         {
-            shifts.push_back({r.to - r.from, r.len});
+            shifts_.push_back({r.to - r.from, r.len});
         }
     }
-    std::sort(shifts.begin(), shifts.end());
+    std::sort(shifts_.begin(), shifts_.end());
     label best = 0, bestCount = 0;
-    for (size_t i = 0; i < shifts.size();)
+    for (size_t i = 0; i < shifts_.size();)
     {
-        const label shift = shifts[i].first;
+        const label shift = shifts_[i].first;
         label count = 0;
-        for (; i < shifts.size() && shifts[i].first == shift; ++i)
+        for (; i < shifts_.size() && shifts_[i].first == shift; ++i)
         {
-            count += shifts[i].second;
+            count += shifts_[i].second;
         }
         if (count > bestCount || (count == bestCount && shift == 0))
         {
@@ -707,6 +706,11 @@ void Foam::particleArrays::moveInPlace
             }
             componentArray& array = components_[c];
             const label o = offset_[c];
+            if (notMoved[c])
+            {
+                array.resize(o + n);
+                continue;
+            }
             const label capacity = label(array.capacity());
             label o2 = o - shift;
             if (o2 < 0 || o2 + n > capacity)
@@ -717,11 +721,7 @@ void Foam::particleArrays::moveInPlace
                 const label room = roomFor(n);
                 o2 = n + 2*room <= capacity ? room : -1;
             }
-            if (notMoved[c])
-            {
-                array.resize(o + n);
-            }
-            else if (o2 >= 0)
+            if (o2 >= 0)
             {
                 array.resize(std::max(label(array.size()), o2 + n));
                 move(array.data(), o, o2, aside);
