@@ -160,8 +160,37 @@ def read_dat(path):
                 header = line[1:].split()
             elif line.strip():
                 rows.append([float(x) for x in line.split()])
-    data = np.array(rows, ndmin=2)
+    data = np.array(rows, dtype=float).reshape(len(rows), len(header))
     return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_series(d, file):
+    """A time series across restarts: the .dat files d/<startTime>/file
+    (d a postProcessing/<name> folder) joined in time order, each start
+    time's rows replacing those of an earlier one from its first row's time
+    on (a run restarted from a time directory goes on from there; without
+    rows, from the start time)."""
+    starts = sorted((s for s in os.listdir(d)
+                     if os.path.isfile(os.path.join(d, s, file))), key=float)
+    if not starts:
+        raise FileNotFoundError("no %s under %s" % (file, d))
+    parts = [read_dat(os.path.join(d, s, file)) for s in starts]
+    names = list(parts[0])
+    for s, p in zip(starts, parts):
+        if list(p) != names:
+            raise ValueError("%s/%s/%s: columns %s, not %s"
+                             % (d, s, file, list(p), names))
+    kept = [parts[-1]]
+    for p, s in zip(parts[-2::-1], starts[:0:-1]):
+        later = kept[0]["time"]
+        if len(later):
+            t = later[0]
+            n = int(np.searchsorted(p["time"], t - 1e-12 * max(1.0, abs(t))))
+        else:
+            t = float(s)
+            n = int(np.searchsorted(p["time"], t + 1e-12 * max(1.0, abs(t)), side="right"))
+        kept.insert(0, {c: p[c][:n] for c in names})
+    return {c: np.concatenate([p[c] for p in kept]) for c in names}
 
 
 def dat_value(path, key):
