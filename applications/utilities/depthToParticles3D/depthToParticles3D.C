@@ -130,7 +130,7 @@ int main(int argc, char *argv[])
 
     columnsTo3D conversion
     (
-        mesh.bounds(),
+        grid.bounds(),
         spacing,
         flow3D.material(),
         mag(g.value()),

@@ -100,6 +100,14 @@ TEST(mpmGrid, ThreeDimensionalBlockKeepsOriginAndSpacing)
     }
     EXPECT_EQ(grid.nNodes(), 11*9*8);
     checkNodesAtMeshPoints(grid);
+
+    // The whole domain's box: the blockMeshDict's corners, to the bit
+    const point lo(1, -2, 0.5), hi(5, 1, 3);
+    for (direction d = 0; d < 3; ++d)
+    {
+        EXPECT_EQ(grid.bounds().min()[d], lo[d]);
+        EXPECT_EQ(grid.bounds().max()[d], hi[d]);
+    }
 }
 
 

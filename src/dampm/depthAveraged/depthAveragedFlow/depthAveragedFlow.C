@@ -1002,9 +1002,8 @@ void Foam::depthAveragedFlow::updateOutputFields()
 {
     particlesToGrid(true);
 
-    const fvMesh& mesh = grid_.mesh();
-    const scalar zLo = mesh.bounds().min().z();
-    const scalar zHi = mesh.bounds().max().z();
+    const scalar zLo = grid_.bounds().min().z();
+    const scalar zHi = grid_.bounds().max().z();
     const scalar eps = 1e-6*max(zHi - zLo, scalar(1));
 
     const label n = particles_.size();

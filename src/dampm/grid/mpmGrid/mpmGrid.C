@@ -14,6 +14,9 @@ License
 #include "processorPolyPatch.H"
 #include "boundBox.H"
 
+#include <cstdio>
+#include <cstdlib>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -22,6 +25,40 @@ namespace Foam
 
     //- Relative tolerance (of the cell size) for lattice checks
     static const scalar latticeTol = 1e-6;
+
+    //- A coordinate as an ASCII mesh written at 12 digits holds it: a
+    //  binary mesh carries blockMesh's round-off (274.00000000000006 for
+    //  274), which a 3D impact amplifies, so both formats give one lattice.
+    //  Rounding is monotonic: the box of the rounded points is the rounded
+    //  box, and a coordinate of 12 digits or fewer is kept as it is
+    static scalar asWritten12(const scalar x)
+    {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.12g", x);
+        return std::strtod(text, nullptr);
+    }
+
+    //- The box of cell 0's points, from the faces beside it: the mesh's
+    //  cell-to-point addressing for every cell is not built for one cell
+    static boundBox firstCellBox(const polyMesh& mesh)
+    {
+        const pointField& pts = mesh.points();
+        const faceList& faces = mesh.faces();
+        const labelList& own = mesh.faceOwner();
+        const labelList& nbr = mesh.faceNeighbour();
+        boundBox bb(boundBox::invertedBox);
+        forAll(faces, facei)
+        {
+            if (own[facei] == 0 || (facei < nbr.size() && nbr[facei] == 0))
+            {
+                for (const label pointi : faces[facei])
+                {
+                    bb.add(pts[pointi]);
+                }
+            }
+        }
+        return bb;
+    }
 }
 
 
@@ -92,11 +129,17 @@ void Foam::mpmGrid::setGeometry()
     // The whole domain's box: on a decomposed case the same numbers as the
     // undecomposed mesh's, so the lattice is that of a serial run
     const boundBox localBb(pts, false);
-    const boundBox bb(pts, decomposed());
+    boundBox& bb = bounds_;
+    bb = boundBox(pts, decomposed());
+    for (direction d = 0; d < 3; ++d)
+    {
+        bb.min()[d] = asWritten12(bb.min()[d]);
+        bb.max()[d] = asWritten12(bb.max()[d]);
+    }
 
     // The spacing from the first cell's bounding box; the lattice checks
     // below catch any other cell size
-    const boundBox cellBb(pts, mesh_.cellPoints()[0], false);
+    const boundBox cellBb(firstCellBox(mesh_));
 
     label n[3], nOwn[3];
     for (direction d = 0; d < 3; ++d)
@@ -249,10 +292,60 @@ void Foam::mpmGrid::mapPoints()
 }
 
 
+void Foam::mpmGrid::cellCentresAndVolumes
+(
+    vectorField& C,
+    scalarField& V
+) const
+{
+    const pointField& pts = mesh_.points();
+    const faceList& faces = mesh_.faces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nbr = mesh_.faceNeighbour();
+    const point o(geom_.origin[0], geom_.origin[1], geom_.origin[2]);
+    C.setSize(mesh_.nCells());
+    V.setSize(mesh_.nCells());
+    C = Zero;
+    V = Zero;
+    labelList nFaces(mesh_.nCells(), Zero);
+    forAll(faces, facei)
+    {
+        const face& f = faces[facei];
+        vector c(Zero);
+        for (const label pointi : f)
+        {
+            c += pts[pointi] - o;
+        }
+        c /= f.size();
+        vector S(Zero);
+        forAll(f, i)
+        {
+            S += 0.5*((pts[f[i]] - o - c) ^ (pts[f.nextLabel(i)] - o - c));
+        }
+        const scalar v = (c & S)/3;
+        C[own[facei]] += c;
+        V[own[facei]] += v;
+        ++nFaces[own[facei]];
+        if (facei < nbr.size())
+        {
+            C[nbr[facei]] += c;
+            V[nbr[facei]] -= v;
+            ++nFaces[nbr[facei]];
+        }
+    }
+    forAll(C, celli)
+    {
+        C[celli] /= max(nFaces[celli], 1);
+    }
+}
+
+
 void Foam::mpmGrid::mapCells()
 {
-    const vectorField& C = mesh_.cellCentres();
-    const scalarField& V = mesh_.cellVolumes();
+    vectorField C;
+    scalarField V;
+    cellCentresAndVolumes(C, V);
+    const point o(geom_.origin[0], geom_.origin[1], geom_.origin[2]);
     const scalar cellVol = geom_.dx[0]*geom_.dx[1]*geom_.dx[2];
 
     meshCell_.setSize(nCells(), -1);
@@ -263,13 +356,13 @@ void Foam::mpmGrid::mapCells()
         label ijk[3];
         for (direction d = 0; d < 3; ++d)
         {
-            const scalar xi = (C[celli][d] - geom_.origin[d])/geom_.dx[d] - 0.5;
+            const scalar xi = C[celli][d]/geom_.dx[d] - 0.5;
             ijk[d] = label(std::round(xi));
             if (mag(xi - ijk[d]) > 1e2*latticeTol*max(scalar(1), mag(xi)))
             {
                 notStructured
                 (
-                    "the centre " + Foam::name(C[celli]) + " of cell "
+                    "the centre " + Foam::name(C[celli] + o) + " of cell "
                   + Foam::name(celli) + " is not a structured cell centre"
                     " (graded or skewed cells)"
                 );
@@ -386,8 +479,9 @@ void Foam::mpmGrid::wallSides(bool wall[3][2]) const
             continue;
         }
         const int kind = isA<wallPolyPatch>(pp) ? 1 : 2;
-        for (const point& c : pp.faceCentres())
+        for (const face& f : pp)
         {
+            const point c = f.centre(mesh_.points());
             for (int d = 0; d < g.dim; ++d)
             {
                 const scalar tol = 1e-6*g.dx[d];
