@@ -15,7 +15,9 @@ Description
 
 #include "mpmGrid.H"
 #include "testCase.H"
+#include "pointIOField.H"
 #include <gtest/gtest.h>
+#include <cmath>
 #include <random>
 
 using namespace Foam;
@@ -65,6 +67,39 @@ void checkNodesAtMeshPoints(const mpmGrid& grid)
     }
 }
 
+//- A copy of a test mesh whose points are moved by fn, written at 17
+//  digits (the test meshes' writePrecision): the same doubles read back
+template<class Fn>
+fileName movedMesh(const std::string& name, const word& mesh, Fn&& fn)
+{
+    const fileName dir = testCase::scratchCopy(name, mesh);
+    testCase tc(dir);
+    pointIOField pts
+    (
+        IOobject
+        (
+            "points", tc.mesh().pointsInstance(), polyMesh::meshSubDir,
+            tc.mesh(), IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    forAll(pts, pointi)
+    {
+        pts[pointi] = fn(pts[pointi], pointi);
+    }
+    pts.write();
+    return dir;
+}
+
+void expectSameLattice(const gridGeometry& a, const gridGeometry& b)
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        EXPECT_EQ(a.origin[d], b.origin[d]) << "axis " << d;
+        EXPECT_EQ(a.dx[d], b.dx[d]) << "axis " << d;
+        EXPECT_EQ(a.nCells[d], b.nCells[d]) << "axis " << d;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -108,6 +143,87 @@ TEST(mpmGrid, ThreeDimensionalBlockKeepsOriginAndSpacing)
         EXPECT_EQ(grid.bounds().min()[d], lo[d]);
         EXPECT_EQ(grid.bounds().max()[d], hi[d]);
     }
+}
+
+
+TEST(mpmGrid, CellCentresAndVolumesFromFacesAreOpenFOAMs)
+{
+    for (const word mesh : {"box2D", "box3D"})
+    {
+        testCase tc(testCase::meshDir(mesh));
+        const mpmGrid grid(tc.mesh());
+        vectorField C;
+        scalarField V;
+        grid.cellCentresAndVolumes(C, V);
+        const gridGeometry& g = grid.geometry();
+        const point o(g.origin[0], g.origin[1], g.origin[2]);
+        ASSERT_EQ(C.size(), tc.mesh().nCells());
+        forAll(C, celli)
+        {
+            const point c = tc.mesh().cellCentres()[celli] - o;
+            for (direction d = 0; d < 3; ++d)
+            {
+                EXPECT_NEAR(C[celli][d], c[d], 1e-12) << mesh << " cell " << celli;
+            }
+            EXPECT_NEAR(V[celli], tc.mesh().cellVolumes()[celli], 1e-13)
+                << mesh << " cell " << celli;
+        }
+    }
+}
+
+
+TEST(mpmGrid, RoundOffInTheMeshLeavesTheLatticeAlone)
+{
+    // blockMesh's round-off in a binary mesh: every coordinate moved by
+    // up to 3 units in the last place; the box is rounded back
+    testCase exact(testCase::meshDir("box3D"));
+    const mpmGrid reference(exact.mesh());
+    std::mt19937 gen(7);
+    std::uniform_int_distribution<int> ulps(-3, 3);
+    const fileName dir = movedMesh
+    (
+        "mpmGridRoundOff", "box3D",
+        [&](point p, label)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                for (int k = ulps(gen); k != 0; k += (k > 0 ? -1 : 1))
+                {
+                    p[d] = std::nextafter(p[d], k > 0 ? 1e300 : -1e300);
+                }
+            }
+            return p;
+        }
+    );
+    testCase noisy(dir);
+    const boundBox noisyBox(noisy.mesh().points(), false);
+    EXPECT_TRUE(noisyBox.min() != reference.bounds().min()
+        || noisyBox.max() != reference.bounds().max())
+        << "the noise moved no corner";
+    const mpmGrid grid(noisy.mesh());
+    expectSameLattice(grid.geometry(), reference.geometry());
+}
+
+
+TEST(mpmGrid, CornersOfManyDigitsAreKept)
+{
+    // UTM-sized coordinates of 16 digits: rounding the box to 12 would
+    // move it by 2e-6 m, off the 0.5 m lattice's tolerance; it is kept
+    const vector shift(512345.678901234, 5123456.789012345, 1234.5);
+    const fileName dir = movedMesh
+    (
+        "mpmGridUTM", "box3D", [&](const point& p, label){ return p + shift; }
+    );
+    testCase tc(dir);
+    const boundBox meshBox(tc.mesh().points(), false);
+    const mpmGrid grid(tc.mesh());
+    for (direction d = 0; d < 3; ++d)
+    {
+        EXPECT_EQ(grid.bounds().min()[d], meshBox.min()[d]) << "axis " << d;
+        EXPECT_EQ(grid.bounds().max()[d], meshBox.max()[d]) << "axis " << d;
+        EXPECT_NEAR(grid.geometry().dx[d], 0.5, 1e-9);
+    }
+    EXPECT_EQ(grid.geometry().nCellsTotal(), 8*6*5);
 }
 
 

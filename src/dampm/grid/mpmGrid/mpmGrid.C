@@ -26,16 +26,29 @@ namespace Foam
     //- Relative tolerance (of the cell size) for lattice checks
     static const scalar latticeTol = 1e-6;
 
-    //- A coordinate as an ASCII mesh written at 12 digits holds it: a
-    //  binary mesh carries blockMesh's round-off (274.00000000000006 for
-    //  274), which a 3D impact amplifies, so both formats give one lattice.
-    //  Rounding is monotonic: the box of the rounded points is the rounded
-    //  box, and a coordinate of 12 digits or fewer is kept as it is
-    static scalar asWritten12(const scalar x)
+    //- The significant digits of an ASCII mesh at writePrecision 12
+    static const int meshDigits = 12;
+
+    //- A box corner as an ASCII mesh of meshDigits holds it, when that
+    //  moves it by round-off only (less than a billionth of the cell size
+    //  h, far inside the lattice checks): a binary mesh carries blockMesh's
+    //  round-off (274.00000000000006 for 274), which a 3D impact amplifies,
+    //  so both formats give one lattice. Rounding is monotonic: the box of
+    //  the rounded points is the rounded box, and a corner of meshDigits or
+    //  fewer is kept as it is. A corner of more digits that rounding would
+    //  move further (5123456.789012345 m) is kept as it is too
+    static scalar asWritten(const scalar x, const scalar h)
     {
         char text[32];
-        std::snprintf(text, sizeof(text), "%.12g", x);
-        return std::strtod(text, nullptr);
+        std::snprintf(text, sizeof(text), "%.*g", meshDigits, x);
+        const scalar rounded = std::strtod(text, nullptr);
+        return mag(rounded - x) < 1e-3*latticeTol*h ? rounded : x;
+    }
+
+    //- The whole domain's origin as a point
+    static point originOf(const gridGeometry& g)
+    {
+        return point(g.origin[0], g.origin[1], g.origin[2]);
     }
 
     //- The box of cell 0's points, from the faces beside it: the mesh's
@@ -129,17 +142,22 @@ void Foam::mpmGrid::setGeometry()
     // The whole domain's box: on a decomposed case the same numbers as the
     // undecomposed mesh's, so the lattice is that of a serial run
     const boundBox localBb(pts, false);
+    // The spacing from the first cell's bounding box; the lattice checks
+    // below catch any other cell size
+    const boundBox cellBb(firstCellBox(mesh_));
+    vector h(cellBb.span());
+    if (decomposed())
+    {
+        // Every processor rounds the box alike
+        reduce(h, minOp<vector>());
+    }
     boundBox& bb = bounds_;
     bb = boundBox(pts, decomposed());
     for (direction d = 0; d < 3; ++d)
     {
-        bb.min()[d] = asWritten12(bb.min()[d]);
-        bb.max()[d] = asWritten12(bb.max()[d]);
+        bb.min()[d] = asWritten(bb.min()[d], h[d]);
+        bb.max()[d] = asWritten(bb.max()[d], h[d]);
     }
-
-    // The spacing from the first cell's bounding box; the lattice checks
-    // below catch any other cell size
-    const boundBox cellBb(firstCellBox(mesh_));
 
     label n[3], nOwn[3];
     for (direction d = 0; d < 3; ++d)
@@ -302,7 +320,7 @@ void Foam::mpmGrid::cellCentresAndVolumes
     const faceList& faces = mesh_.faces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nbr = mesh_.faceNeighbour();
-    const point o(geom_.origin[0], geom_.origin[1], geom_.origin[2]);
+    const point o(originOf(geom_));
     C.setSize(mesh_.nCells());
     V.setSize(mesh_.nCells());
     C = Zero;
@@ -345,7 +363,7 @@ void Foam::mpmGrid::mapCells()
     vectorField C;
     scalarField V;
     cellCentresAndVolumes(C, V);
-    const point o(geom_.origin[0], geom_.origin[1], geom_.origin[2]);
+    const point o(originOf(geom_));
     const scalar cellVol = geom_.dx[0]*geom_.dx[1]*geom_.dx[2];
 
     meshCell_.setSize(nCells(), -1);
