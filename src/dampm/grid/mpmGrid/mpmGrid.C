@@ -139,9 +139,8 @@ void Foam::mpmGrid::setGeometry()
     {
         notStructured("it has no cells");
     }
-    // The whole domain's box: on a decomposed case the same numbers as the
-    // undecomposed mesh's, so the lattice is that of a serial run
     const boundBox localBb(pts, false);
+
     // The spacing from the first cell's bounding box; the lattice checks
     // below catch any other cell size
     const boundBox cellBb(firstCellBox(mesh_));
@@ -151,6 +150,9 @@ void Foam::mpmGrid::setGeometry()
         // Every processor rounds the box alike
         reduce(h, minOp<vector>());
     }
+
+    // The whole domain's box: on a decomposed case the same numbers as the
+    // undecomposed mesh's, so the lattice is that of a serial run
     boundBox& bb = bounds_;
     bb = boundBox(pts, decomposed());
     for (direction d = 0; d < 3; ++d)
